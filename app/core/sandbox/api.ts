@@ -70,6 +70,9 @@ function cellsOfSegment(grid: GridSpec, s: Segment): [number, number][] {
   return out;
 }
 
+/** Column and row steps of the grid actions north, east, south, west and stay. */
+const NEIGHBOUR_STEPS: readonly (readonly [number, number])[] = [[0, 1], [1, 0], [0, -1], [-1, 0], [0, 0]];
+
 /** The native helpers, by the name generated code calls them with. */
 export const API = {
   distance: {
@@ -193,6 +196,37 @@ export const API = {
     doc: 'A table with one entry per cell (a list of rows, each a list of columns), every entry set to a value.',
     fn: (grid: GridSpec, value: unknown) => Array.from({ length: grid.rows }, () => new Array<unknown>(grid.cols).fill(value)),
   },
+  goalNames: {
+    category: 'world',
+    params: [p('goals', 'list')],
+    returns: 'list',
+    doc: 'The names of the goals, in the order the world lists them.',
+    fn: (goals: readonly { name: string }[]) => goals.map((g) => g.name),
+  },
+  neighbourCell: {
+    category: 'grid',
+    params: [p('cell', 'point'), p('action', 'number')],
+    returns: 'point',
+    doc: 'The cell [column, row] next to a cell in the direction of an action: 0 north, 1 east, 2 south, 3 west, 4 stay.',
+    fn: (cell: Point, action: number) => {
+      const [dc, dr] = NEIGHBOUR_STEPS[action] ?? [0, 0];
+      return [cell[0] + dc, cell[1] + dr];
+    },
+  },
+  listWithout: {
+    category: 'list',
+    params: [p('list', 'list'), p('item', 'any')],
+    returns: 'list',
+    doc: 'A new list with every copy of an item taken out (the original list does not change).',
+    fn: (list: readonly unknown[], item: unknown) => list.filter((x) => !sameJson(x, item)),
+  },
+  moveToFront: {
+    category: 'list',
+    params: [p('list', 'list'), p('item', 'any')],
+    returns: 'list',
+    doc: 'A new list that starts with the item, followed by the other items of the list in their order (the original list does not change).',
+    fn: (list: readonly unknown[], item: unknown) => [item, ...list.filter((x) => !sameJson(x, item))],
+  },
   copyList: {
     category: 'list',
     params: [p('list', 'list')],
@@ -218,4 +252,10 @@ function structuredCloneJson<T>(v: T): T {
     return out as T;
   }
   return v;
+}
+
+function sameJson(a: unknown, b: unknown): boolean {
+  if (a === b) return true;
+  if (typeof a !== 'object' || typeof b !== 'object' || a === null || b === null) return false;
+  return JSON.stringify(a) === JSON.stringify(b);
 }
