@@ -2,7 +2,8 @@
  * The `layerbot` command line: the same Session the app drives, headless.
  * Exit codes: 0 ran (a crash is a result), 1 a controller error, 2 bad input or usage.
  */
-import { Command, CommanderError, InvalidArgumentError } from 'commander';
+import { Command, CommanderError, InvalidArgumentError, Option } from 'commander';
+import { benchCommand } from './commands/bench';
 import { checkCommand } from './commands/check';
 import { runCommand } from './commands/run';
 import { InputError } from './load';
@@ -34,8 +35,9 @@ export async function main(argv: readonly string[]): Promise<number> {
     .option('-s, --seed <s>', 'seed every random source (source i gets s + i)', integer('--seed', -(2 ** 53)))
     .option('--trace <file.csv>', 'write the trajectory as CSV: tick,x,y,heading,whisker,crashed')
     .option('--json', 'print a JSON summary: {ticks, crashed, crashTick, goals, error, ticksPerSecond}')
-    .action((controller: string, opts) => {
-      code = runCommand(controller, opts, out);
+    .addOption(new Option('-e, --engine <engine>', 'the sandbox: the reference interpreter, or the fast engine').choices(['interpreter', 'fast']).default('interpreter'))
+    .action(async (controller: string, opts) => {
+      code = await runCommand(controller, opts, out);
     });
 
   program
@@ -44,6 +46,14 @@ export async function main(argv: readonly string[]): Promise<number> {
     .argument('<files...>', 'files to check')
     .action((files: string[]) => {
       code = checkCommand(files, out, err);
+    });
+
+  program
+    .command('bench')
+    .description('Measure the performance figures (sandbox vs native, value-iteration replans, ticks per second, history memory, seeking).')
+    .option('--json', 'print the figures as JSON')
+    .action(async (opts) => {
+      code = await benchCommand(opts, out);
     });
 
   try {
