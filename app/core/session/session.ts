@@ -317,7 +317,10 @@ export class Session {
           `but it returned ${describeValue(result.value)}${result.value === undefined ? '' : ` (${formatValue(result.value, 60)})`}.`,
       };
     }
-    ctx.outputs[i] = result.value;
+    // A value equal to this function's previous output is stored as that same object, so the
+    // history holds each value once while it is unchanged, whatever the function's code does.
+    const before = ctx.previous?.[i];
+    ctx.outputs[i] = before !== undefined && before !== result.value && sameValue(before, result.value) ? before : result.value;
     return null;
   }
 

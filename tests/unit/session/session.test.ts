@@ -123,3 +123,17 @@ describe('session', () => {
     expect(s.run(2000).goals.map((g) => g.reachedTick)).toEqual([127, 170, 216, 284]);
   });
 });
+
+describe('history sharing', () => {
+  test('an output equal to the previous tick\'s is stored as the same object (SPEC T12, DESIGN history)', () => {
+    const c = controller([
+      layer('Top', [fn('grid', 'list', [], 'var g = []; for (var r = 0; r < 3; r++) { g.push([r, r + 1]); } return g;')]),
+      layer('Bottom', [forward()]),
+    ]);
+    const s = new Session({ ...world, plan: [] }, c, opts);
+    s.run(5);
+    const outputs = [...s.history.slice(1)].map((r) => r.outputs[0]);
+    expect(outputs[0]).toEqual([[0, 1], [1, 2], [2, 3]]);
+    for (const o of outputs) expect(o).toBe(outputs[0]);
+  });
+});
