@@ -301,9 +301,11 @@ export class Session {
   /** Runs function `i`; returns the error that stops the tick, or null. */
   private runFunction(i: number, ctx: TickContext, printed: OutputLine[], tick: number): ControllerError | null {
     const { fn, layer } = this.functions[i];
-    const args = this.args[i].map((a) => a(ctx));
+    const sources = this.args[i];
+    const args = new Array<unknown>(sources.length);
+    for (let j = 0; j < sources.length; j++) args[j] = sources[j](ctx);
     const result = this.sandbox.call(i, args, this.budget);
-    for (const text of result.output) printed.push({ function: fn.name, layer: layer.name, text });
+    if (result.output.length) for (const text of result.output) printed.push({ function: fn.name, layer: layer.name, text });
     if (!result.ok) return this.failure(i, args, result, tick);
     if (!matchesType(result.value, fn.output)) {
       return {

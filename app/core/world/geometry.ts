@@ -36,7 +36,9 @@ export function normalizeAngle(degrees: number): number {
 
 /** Euclidean distance between two points. */
 export function distance(a: Point, b: Point): number {
-  return Math.hypot(b[0] - a[0], b[1] - a[1]);
+  const dx = b[0] - a[0];
+  const dy = b[1] - a[1];
+  return Math.sqrt(dx * dx + dy * dy);
 }
 
 /**
@@ -45,12 +47,15 @@ export function distance(a: Point, b: Point): number {
  * parallel segments never intersect, and end points count.
  */
 export function crossingAlong(a: Segment, b: Segment): number | null {
-  const [[x0a, y0a], [x1a, y1a]] = a;
-  const [[x0b, y0b], [x1b, y1b]] = b;
-  const da = x1a - x0a;
-  const db = x1b - x0b;
-  const ea = y1a - y0a;
-  const eb = y1b - y0b;
+  // Indexing, not destructuring: this runs several times per wall per tick.
+  const x0a = a[0][0];
+  const y0a = a[0][1];
+  const x0b = b[0][0];
+  const y0b = b[0][1];
+  const da = a[1][0] - x0a;
+  const db = b[1][0] - x0b;
+  const ea = a[1][1] - y0a;
+  const eb = b[1][1] - y0b;
   const denom = db * ea - eb * da;
   if (denom === 0) return null;
   const cb = (da * (y0b - y0a) - ea * (x0b - x0a)) / denom;

@@ -118,20 +118,20 @@ export function initialState(spec: WorldSpec): WorldState {
     crash: null,
     reached: Object.freeze(spec.plan.map(() => null)),
   };
-  return Object.freeze({ ...base, reached: trackPlan(base, 0) });
+  return Object.freeze({ ...base, reached: trackPlan(base, robot, 0) });
 }
 
 /**
  * Marks plan steps reached at `tick`: the next unreached step is reached when the robot ends the
  * tick within the goal radius of its goal. One tick reaches at most one step.
  */
-function trackPlan(state: WorldState, tick: number): readonly (number | null)[] {
-  const i = nextPlanStep(state);
-  if (i >= state.plan.length) return state.reached;
+function trackPlan(state: Pick<WorldState, 'plan' | 'goals' | 'reached' | 'goalRadius'>, robot: Pose, tick: number): readonly (number | null)[] {
+  const i = state.reached.indexOf(null);
+  if (i < 0) return state.reached;
   const goal = goalByName(state, state.plan[i]);
   if (!goal) return state.reached;
-  const dx = goal.x - state.robot.x;
-  const dy = goal.y - state.robot.y;
+  const dx = goal.x - robot.x;
+  const dy = goal.y - robot.y;
   if (dx * dx + dy * dy > state.goalRadius * state.goalRadius) return state.reached;
   const reached = state.reached.slice();
   reached[i] = tick;
@@ -147,7 +147,7 @@ export function applyCommand(state: WorldState, command: BodyCommand, tick: numb
   if (state.crash) return state;
   const heading = normalizeHeading(command.heading);
   let { dx, dy } = command;
-  const length = Math.hypot(dx, dy);
+  const length = Math.sqrt(dx * dx + dy * dy);
   // A tiny tolerance keeps unit moves computed with cos/sin (length 1 +- 1 ulp) exact.
   if (length > state.body.maxSpeed * (1 + 1e-12)) {
     dx *= state.body.maxSpeed / length;
@@ -155,17 +155,22 @@ export function applyCommand(state: WorldState, command: BodyCommand, tick: numb
   }
   const from: Point = [state.robot.x, state.robot.y];
   const path: Segment = [from, [from[0] + dx, from[1] + dy]];
-  const crash = firstCrossing(path, state.walls);
-  const robot: Pose = crash
+  const hit = firstCrossing(path, state.walls);
+  const robot: Pose = hit
     ? Object.freeze({ x: from[0], y: from[1], heading })
     : Object.freeze({ x: path[1][0], y: path[1][1], heading });
-  const moved: WorldState = {
-    ...state,
+  return Object.freeze({
+    walls: state.walls,
+    goals: state.goals,
+    plan: state.plan,
     robot,
+    body: state.body,
+    goalRadius: state.goalRadius,
+    bounds: state.bounds,
     whisker: senseWhisker(robot, state.body, state.walls),
-    crash: crash ? Object.freeze({ tick, point: pointAlong(path, crash.t), wall: crash.wall }) : null,
-  };
-  return Object.freeze({ ...moved, reached: trackPlan(moved, tick) });
+    crash: hit ? Object.freeze({ tick, point: pointAlong(path, hit.t), wall: hit.wall }) : null,
+    reached: trackPlan(state, robot, tick),
+  });
 }
 
 function firstCrossing(path: Segment, walls: readonly Segment[]): { t: number; wall: number } | null {
