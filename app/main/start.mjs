@@ -1,10 +1,11 @@
 #!/usr/bin/env node
 /**
- * `npm start`: builds and opens the Electron app when its runtime is installed; otherwise says
- * so plainly and serves the web build at http://127.0.0.1:5173/ (PORT changes it) instead.
- * It never calls `require('electron')`, which would try to download the runtime.
+ * `npm start`: builds and opens the Electron app. Electron's npm package no longer downloads its
+ * runtime at install time, so the first start fetches it (the package's own installer); where
+ * that cannot be done (offline, or a blocked host), it says so plainly and serves the web build at
+ * http://127.0.0.1:5173/ (PORT changes it) instead.
  */
-import { spawn } from 'node:child_process';
+import { spawn, spawnSync } from 'node:child_process';
 import { existsSync, readFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -22,8 +23,21 @@ function electronBinary() {
   return existsSync(exe) ? exe : null;
 }
 
+/** Runs Electron's own installer, which downloads the runtime; true when it is there afterwards. */
+function installElectron() {
+  const installer = join(ROOT, 'node_modules/electron/install.js');
+  if (!existsSync(installer) || process.env.LAYERBOT_NO_DOWNLOAD) return false;
+  console.log('Fetching the Electron runtime (first start only)…');
+  const r = spawnSync(process.execPath, [installer], { stdio: ['ignore', 'ignore', 'pipe'], timeout: 300_000, encoding: 'utf8' });
+  if (r.status !== 0) {
+    const reason = (r.stderr ?? '').split('\n').find((l) => /Error|ENOTFOUND|EAI_AGAIN|ECONN|timed out/i.test(l));
+    console.log(`Could not fetch it${reason ? ` (${reason.trim()})` : ''}.`);
+  }
+  return electronBinary() !== null;
+}
+
 async function main() {
-  const exe = electronBinary();
+  const exe = electronBinary() ?? (installElectron() ? electronBinary() : null);
   if (exe) {
     console.log('Building Layerbot…');
     buildWeb();
@@ -34,9 +48,10 @@ async function main() {
   }
   console.log(
     [
+      '',
       'The Electron runtime is not installed, so Layerbot opens in your browser instead.',
-      'To get the desktop app, on a machine with internet access run:  npx install-electron',
-      '(or delete node_modules/electron and run npm install), then npm start again.',
+      'To get the desktop app, run npm start again on a machine that can reach Electron\'s download',
+      'server (or run  npx install-electron  there). Everything else works the same in the browser.',
       '',
     ].join('\n'),
   );
