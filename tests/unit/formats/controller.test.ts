@@ -18,7 +18,7 @@ const text = (o: unknown) => JSON.stringify(o, null, 2);
 const pathsAndMessages = (ps: readonly FileProblem[]) => ps.map((p) => `${p.path}: ${p.message}`);
 
 /** A valid controller file as an object, to spoil one field at a time. */
-function base(): { layers: { functions: Record<string, unknown>[] }[] } & Record<string, unknown> {
+function base(): { layers: ({ functions: Record<string, unknown>[] } & Record<string, unknown>)[] } & Record<string, unknown> {
   return {
     format: 'layerbot-controller',
     version: 1,

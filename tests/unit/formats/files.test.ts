@@ -6,7 +6,7 @@ import { FileAccessError, readTextFile, writeFileAtomic } from '../../../app/cli
 /** Lets a test make the final rename fail, as a full disk or a vanished folder would. */
 const failRename: { error: Error | null } = { error: null };
 jest.mock('node:fs', () => {
-  const actual = jest.requireActual<typeof import('node:fs')>('node:fs');
+  const actual = jest.requireActual<typeof fs>('node:fs');
   return {
     ...actual,
     renameSync: (from: fs.PathLike, to: fs.PathLike) => {
