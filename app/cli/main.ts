@@ -5,6 +5,7 @@
 import { Command, CommanderError, InvalidArgumentError, Option } from 'commander';
 import { benchCommand } from './commands/bench';
 import { checkCommand } from './commands/check';
+import { gradeCommand } from './commands/grade';
 import { runCommand } from './commands/run';
 import { InputError } from './load';
 
@@ -46,6 +47,21 @@ export async function main(argv: readonly string[]): Promise<number> {
     .argument('<files...>', 'files to check')
     .action((files: string[]) => {
       code = checkCommand(files, out, err);
+    });
+
+  program
+    .command('grade')
+    .description('Run every challenge of a pack on each submission and print the verdicts.')
+    .argument('<pack>', 'a *.pack.json file')
+    .argument('<submissions...>', '*.submission.json files, or *.controller.json files named after a challenge id')
+    .option('--csv <file>', 'write one row per submission and challenge')
+    .option('--json', 'print JSON: every challenge verdict with passed and its reasons')
+    .option('-j, --jobs <n>', 'worker threads (default: one per core; 1 = in-process)', integer('--jobs', 1))
+    .option('-s, --seed <s>', 'seed every random source', integer('--seed', -(2 ** 53)))
+    .option('--timeout <seconds>', 'the longest one submission may take (default 300)', integer('--timeout', 1))
+    .option('--max-steps <n>', "cap on one call's step budget (default 20,000,000)", integer('--max-steps', 1))
+    .action(async (pack: string, submissions: string[], opts) => {
+      code = await gradeCommand(pack, submissions, opts, out, err);
     });
 
   program

@@ -1,5 +1,6 @@
 /** `layerbot check FILE...`: validates worlds, controllers and packs and explains every problem. */
 import { detectFormat } from '../../core/formats';
+import { parsePack, parseSubmission } from '../../core/packs';
 import { readTextFile } from '../files';
 import { checkCompiles, InputError, loadController, loadWorld } from '../load';
 
@@ -10,7 +11,12 @@ export function checkCommand(files: readonly string[], out: (s: string) => void,
     try {
       const kind = kindOf(file);
       if (kind === 'world') loadWorld(file);
-      else checkCompiles(loadController(file), file);
+      else if (kind === 'controller') checkCompiles(loadController(file), file);
+      else {
+        const text = readTextFile(file);
+        const parsed = kind === 'pack' ? parsePack(text, file) : parseSubmission(text, file);
+        if (!parsed.ok) throw new InputError(parsed.problems.map((p) => `${p.file}: ${p.path}: ${p.message}`).join('\n'));
+      }
       out(`${file}: OK (${kind})`);
     } catch (e) {
       bad++;
@@ -21,15 +27,27 @@ export function checkCommand(files: readonly string[], out: (s: string) => void,
   return bad ? 2 : 0;
 }
 
-function kindOf(file: string): 'world' | 'controller' {
+type Kind = 'world' | 'controller' | 'pack' | 'submission';
+
+function kindOf(file: string): Kind {
   let text: string;
   try {
     text = readTextFile(file);
   } catch (e) {
     throw new InputError(e instanceof Error ? e.message : String(e));
   }
-  const format = detectFormat(text);
+  const format = declaredFormat(text) ?? detectFormat(text);
   if (format === 'world' || /\.world\.json$/i.test(file)) return 'world';
   if (format === 'controller' || /\.controller\.json$/i.test(file)) return 'controller';
-  throw new InputError(`${file}: $.format: expected "layerbot-world" or "layerbot-controller"; cannot tell what kind of file this is.`);
+  if (format === 'pack' || /\.pack\.json$/i.test(file)) return 'pack';
+  if (format === 'submission' || /\.submission\.json$/i.test(file)) return 'submission';
+  throw new InputError(
+    `${file}: $.format: expected "layerbot-world", "layerbot-controller", "layerbot-pack" or "layerbot-submission"; cannot tell what kind of file this is.`,
+  );
+}
+
+/** The kind a file's "format" field declares, read without validating anything else. */
+function declaredFormat(text: string): Kind | null {
+  const m = /"format"\s*:\s*"layerbot-(world|controller|pack|submission)"/.exec(text.slice(0, 2000));
+  return m ? (m[1] as Kind) : null;
 }
