@@ -16,7 +16,7 @@ import type { ControllerSpec } from '../core/controller/model';
 import { allFunctions } from '../core/controller/model';
 import type { ControllerError, RunSummary } from '../core/session/types';
 import type { WorldSpec } from '../core/world/world';
-import { workerBundle } from './fast-bundle';
+import { workerBundle } from './bundle';
 import type { RunRequest, TickDigest, WorkerReply } from './fast-protocol';
 import { CONTROL } from './fast-protocol';
 

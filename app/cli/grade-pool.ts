@@ -7,7 +7,7 @@
 import { Worker } from 'node:worker_threads';
 import type { Pack, SubmissionVerdict } from '../core/packs';
 import { unreadableSubmission } from '../core/packs';
-import { gradeWorkerBundle } from './grade-bundle';
+import { workerBundle } from './bundle';
 import type { GradeInit, GradeReply, GradeTask } from './grade-protocol';
 
 export interface PoolOptions {
@@ -20,7 +20,7 @@ export interface PoolOptions {
 
 /** Grades every file; resolves to the verdicts in the files' order. */
 export function gradeOnWorkers(pack: Pack, files: readonly string[], options: PoolOptions): Promise<SubmissionVerdict[]> {
-  const bundle = gradeWorkerBundle();
+  const bundle = workerBundle('grade-worker');
   const verdicts: (SubmissionVerdict | undefined)[] = new Array(files.length);
   let next = 0;
   let done = 0;

@@ -12,7 +12,7 @@ import { parseController, serializeController } from '../../app/core/formats';
 import { Session } from '../../app/core/session/session';
 import type { WorldSpec } from '../../app/core/world/world';
 import { generateBody } from '../../blocks/generate';
-import { createPlainSandbox } from '../support/plain-sandbox';
+import { createPlainSandbox } from '../../app/cli/bench/plain-sandbox';
 import { basicController, basicRandomController, nearestGoalController, valueIterationController } from './examples/controllers';
 import { office, trap, trapNew } from './examples/worlds';
 

@@ -8,7 +8,7 @@ import { parentPort } from 'node:worker_threads';
 import { createSesSandbox, lockdownForSandbox } from '../../core/sandbox/ses';
 import type { Sandbox } from '../../core/sandbox/types';
 import { Session } from '../../core/session/session';
-import { createPlainSandbox } from '../../../tests/support/plain-sandbox';
+import { createPlainSandbox } from './plain-sandbox';
 import { bodiesFrom } from '../fast-worker-support';
 import { median, ticksPerSecond, timeMs, worstSeekMs } from './measure';
 import type { BenchJob, FastFigures } from './protocol';

@@ -13,7 +13,7 @@ import { ticksPerSecond } from '../bench/measure';
 import type { BenchJob, FastFigures } from '../bench/protocol';
 import { RATIO_SIZE, VI_SIZES } from '../bench/protocol';
 import { viBenchWorld, withCellSize } from '../bench/vi-setup';
-import { repositoryRoot, workerBundle } from '../fast-bundle';
+import { repositoryRoot, workerBundle } from '../bundle';
 import { generatedBodies } from '../fast-session';
 import { loadController, loadWorld } from '../load';
 

@@ -5,7 +5,7 @@ import { generateBody } from '../../../blocks/generate';
 import { API, RESERVED_NAMES } from '../../../app/core/sandbox/api';
 import { compileController } from '../../../app/core/controller/compile';
 import { Session } from '../../../app/core/session/session';
-import { createPlainSandbox } from '../../support/plain-sandbox';
+import { createPlainSandbox } from '../../../app/cli/bench/plain-sandbox';
 import { controller, forward, layer, world } from '../../support/controllers';
 import type { JsonValue } from '../../../app/core/values';
 

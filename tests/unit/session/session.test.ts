@@ -2,7 +2,7 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { ControllerSpec } from '../../../app/core/controller/model';
 import { ControllerInvalidError, Session } from '../../../app/core/session/session';
-import { createPlainSandbox } from '../../support/plain-sandbox';
+import { createPlainSandbox } from '../../../app/cli/bench/plain-sandbox';
 import { controller, fn, forward, layer, world } from '../../support/controllers';
 
 const opts = { sandbox: createPlainSandbox, generateBody: null };

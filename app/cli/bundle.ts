@@ -1,17 +1,21 @@
 /**
- * Worker threads run plain JavaScript files: the fast engine's worker entries are bundled with
- * esbuild into dist/ on first use and whenever a source is newer than the bundle (the rule
- * app/cli/bin.cjs applies to the CLI), so they work straight from a fresh clone, from the bundled
- * CLI and from Jest alike.
+ * Worker threads run plain JavaScript files: their entries are bundled with esbuild into dist/ on
+ * first use and whenever a source is newer than the bundle (the rule app/cli/bin.cjs applies to the
+ * CLI itself), so they work straight from a fresh clone, from the bundled CLI and from Jest alike.
  */
 import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import type * as Esbuild from 'esbuild';
 
-/** The worker entries, by bundle name (dist/NAME.cjs), as paths from the repository root. */
+/**
+ * The worker entries, by bundle name (dist/NAME.cjs), with the source folders whose changes make
+ * a rebuild. The fast engine's workers get generated code from their parent and never load
+ * Blockly; the grader's worker generates block code itself, so blocks/ is one of its sources.
+ */
 export const WORKER_ENTRIES = {
-  'fast-worker': 'app/cli/fast-worker.ts',
-  'bench-worker': 'app/cli/bench/bench-worker.ts',
+  'fast-worker': { entry: 'app/cli/fast-worker.ts', sources: ['app/core', 'app/cli'] },
+  'bench-worker': { entry: 'app/cli/bench/bench-worker.ts', sources: ['app/core', 'app/cli'] },
+  'grade-worker': { entry: 'app/cli/grade-worker.ts', sources: ['app/core', 'app/cli', 'blocks'] },
 } as const;
 
 export type WorkerName = keyof typeof WORKER_ENTRIES;
@@ -38,15 +42,16 @@ function newestMtime(dir: string): number {
 /** The path of a worker's bundle, built first if it is missing or older than its sources. */
 export function workerBundle(name: WorkerName): string {
   const root = repositoryRoot();
+  const { entry, sources } = WORKER_ENTRIES[name];
   const outfile = join(root, 'dist', `${name}.cjs`);
-  const sources = ['app/core', 'app/cli'].map((d) => join(root, d)).filter((d) => existsSync(d));
-  const stale = !existsSync(outfile) || sources.some((d) => newestMtime(d) > statSync(outfile).mtimeMs);
+  const dirs = sources.map((d) => join(root, d)).filter((d) => existsSync(d));
+  const stale = !existsSync(outfile) || dirs.some((d) => newestMtime(d) > statSync(outfile).mtimeMs);
   if (stale) {
     // Loaded only when a build is needed: the bundled CLI does not carry esbuild.
     // eslint-disable-next-line @typescript-eslint/no-require-imports -- a lazy, optional dependency
     const esbuild = require('esbuild') as typeof Esbuild;
     esbuild.buildSync({
-      entryPoints: [join(root, WORKER_ENTRIES[name])],
+      entryPoints: [join(root, entry)],
       outfile,
       bundle: true,
       platform: 'node',

@@ -1,11 +1,11 @@
 /**
  * A reference "sandbox" that runs compiled functions as plain JavaScript in the host realm, with
  * no isolation and no step budget. It exists only as the native baseline for benchmarks and for
- * cross-checking the real engines in tests; the app and the CLI never use it.
+ * cross-checking the real engines in tests; the app never uses it, and the CLI only in `bench`.
  */
-import { API } from '../../app/core/sandbox/api';
-import type { CompiledFunction, Sandbox, SandboxFactory } from '../../app/core/sandbox/types';
-import { deepFreeze } from '../../app/core/values';
+import { API } from '../../core/sandbox/api';
+import type { CompiledFunction, Sandbox, SandboxFactory } from '../../core/sandbox/types';
+import { deepFreeze } from '../../core/values';
 
 export const createPlainSandbox: SandboxFactory = (functions: readonly CompiledFunction[]): Sandbox => {
   let output: string[] = [];
