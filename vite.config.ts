@@ -38,7 +38,8 @@ export default defineConfig({
   plugins: [blocklyMedia()],
   worker: { format: 'es' },
   build: {
-    outDir: resolve(__dirname, 'dist/web'),
+    // LAYERBOT_WEB_DIR builds elsewhere (the static server and the browser tests read it too).
+    outDir: process.env.LAYERBOT_WEB_DIR ? resolve(process.env.LAYERBOT_WEB_DIR) : resolve(__dirname, 'dist/web'),
     emptyOutDir: true,
     target: 'es2022',
     sourcemap: true,

@@ -11,7 +11,8 @@ import { dirname, extname, join, normalize, resolve, sep } from 'node:path';
 import { fileURLToPath, URL } from 'node:url';
 
 const ROOT = resolve(dirname(fileURLToPath(import.meta.url)), '../..');
-export const WEB_DIR = join(ROOT, 'dist/web');
+/** The web build; LAYERBOT_WEB_DIR points elsewhere (a second build beside the usual one). */
+export const WEB_DIR = process.env.LAYERBOT_WEB_DIR ? resolve(process.env.LAYERBOT_WEB_DIR) : join(ROOT, 'dist/web');
 
 const TYPES = {
   '.html': 'text/html; charset=utf-8',

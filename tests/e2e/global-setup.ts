@@ -16,8 +16,9 @@ export default async function globalSetup(): Promise<void> {
         'Install it (Debian/Ubuntu: sudo apt-get install -y chromium) or point LAYERBOT_CHROMIUM at a Chromium binary.',
     );
   }
-  if (!existsSync(join(ROOT, 'dist/web/index.html'))) {
-    throw new Error('Browser tests need the web build in dist/web. Run `npm run build:web` first (`npm test` does it).');
+  const web = process.env.LAYERBOT_WEB_DIR ?? join(ROOT, 'dist/web');
+  if (!existsSync(join(web, 'index.html'))) {
+    throw new Error(`Browser tests need the web build in ${web}. Run \`npm run build:web\` first (\`npm test\` does it).`);
   }
   const child = spawn(process.execPath, [join(ROOT, 'app/main/serve.mjs'), '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
   const url = await new Promise<string>((resolve, reject) => {

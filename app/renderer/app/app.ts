@@ -27,7 +27,7 @@ import { RunSummary } from '../panels/run-summary';
 import { DockTabs } from '../panels/tabs';
 import { Timeline } from '../panels/timeline';
 import { PaneArea } from '../panes/pane-area';
-import type { PaneHost } from '../panes/types';
+import type { EditRestrictions, PaneHost } from '../panes/types';
 import type { WorldPicture } from '../world-view/picture';
 import type { EditMarks } from '../world-view/view';
 import { WorldView } from '../world-view/view';
@@ -69,6 +69,10 @@ export class App {
   private runError: ControllerError | null = null;
   private readonly onRunError = new Emitter<ControllerError | null>();
   private readonly onControllerOpened = new Emitter<ControllerSpec | null>();
+  private restrictions: EditRestrictions | null = null;
+  private readonly onRestrictions = new Emitter<EditRestrictions | null>();
+  /** The step-by-step debugger sets this: replays a function at the selected tick. */
+  stepIntoHandler: ((layer: string, fn: string) => void) | null = null;
   private fitPending = true;
   /** While restoring, documents open without loading the engine each time; start() loads once. */
   private starting = true;
@@ -153,6 +157,12 @@ export class App {
       onError: (fn) => this.onRunError.on(fn),
       notice: (text, kind) => this.store.notice(text, kind),
       showPane: (id) => this.panes.show(id),
+      restrictions: () => this.restrictions,
+      onRestrictionsChanged: (fn) => this.onRestrictions.on(fn),
+      stepInto: (layer, fn) => {
+        if (this.stepIntoHandler) this.stepIntoHandler(layer, fn);
+        else this.store.notice('The step-by-step debugger is not available.', 'error');
+      },
     };
   }
 
@@ -199,6 +209,17 @@ export class App {
       this.store.notice(m.split('\n')[0], 'error');
     });
     this.create.onChange.on(() => this.invalidate());
+  }
+
+  /** Sets what the open challenge locks and offers (null: no challenge, nothing restricted). */
+  setRestrictions(r: EditRestrictions | null): void {
+    this.restrictions = r;
+    this.onRestrictions.emit(r);
+  }
+
+  /** The right-hand pane (the debugger highlights blocks through it). */
+  get paneArea(): PaneArea {
+    return this.panes;
   }
 
   /** Loads the world and the controller into a fresh engine session. */

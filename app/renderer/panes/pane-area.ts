@@ -1,6 +1,6 @@
 /** The right-hand pane: a tab per ControllerPane, each mounted once into its own element. */
 import type { ControllerError } from '../../core/session/types';
-import type { ControllerPane, PaneHost } from './types';
+import type { ControllerPane, PaneHost, StepPoint } from './types';
 
 export class PaneArea {
   private readonly panels = new Map<string, { pane: ControllerPane; el: HTMLElement; tab: HTMLButtonElement }>();
@@ -61,5 +61,16 @@ export class PaneArea {
       }
     }
     return false;
+  }
+
+  /** Shows the debugger's position in every pane that can; brings the first to the front. */
+  highlightStep(point: StepPoint | null): void {
+    let shown = false;
+    for (const { pane } of this.panels.values()) {
+      if (pane.highlightStep?.(point) && !shown && point) {
+        shown = true;
+        this.show(pane.id);
+      }
+    }
   }
 }

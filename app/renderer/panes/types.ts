@@ -5,6 +5,7 @@
  * See app/renderer/CONTEXT.md.
  */
 import type { ControllerSpec } from '../../core/controller/model';
+import type { Lock, ToolboxCategory } from '../../core/packs/model';
 import type { ControllerError } from '../../core/session/types';
 import type { ArcRow } from '../engine/client';
 import type { FunctionInfo } from '../engine/protocol';
@@ -35,6 +36,30 @@ export interface PaneHost {
   notice(text: string, kind?: 'info' | 'error'): void;
   /** Brings a pane to the front by id. */
   showPane(id: string): void;
+  /**
+   * What the open challenge restricts (locked layers and functions, the toolbox categories on
+   * offer), or null when no challenge is open: everything is editable, every category offered.
+   */
+  restrictions(): EditRestrictions | null;
+  onRestrictionsChanged(fn: (r: EditRestrictions | null) => void): Unsubscribe;
+  /** Replays a function at the selected tick in the step-by-step debugger (block by block). */
+  stepInto(layer: string, fn: string): void;
+}
+
+/** A challenge's limits on editing, as the controller editor applies them. */
+export interface EditRestrictions {
+  /** Locked layers (no `function`) and single functions: visible, not editable. */
+  readonly locked: readonly Lock[];
+  /** The body toolbox categories offered; absent means all of them. */
+  readonly toolbox?: readonly ToolboxCategory[];
+}
+
+/** Where the step-by-step debugger is: the block about to run in a function, or nothing. */
+export interface StepPoint {
+  readonly layer: string;
+  readonly function: string;
+  /** The block about to run; null when the function has not started or has returned. */
+  readonly blockId: string | null;
 }
 
 /** A tab of the right-hand pane. */
@@ -52,4 +77,9 @@ export interface ControllerPane {
    * Returns true when this pane handled it; the app then brings the pane to the front.
    */
   revealError?(error: ControllerError): boolean;
+  /**
+   * Shows where the debugger is (opens the function, highlights the block); null clears the
+   * highlight. Returns true when this pane shows it.
+   */
+  highlightStep?(point: StepPoint | null): boolean;
 }
