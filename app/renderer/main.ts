@@ -7,8 +7,11 @@ import { App } from './app/app';
 import { EXAMPLE_CONTROLLERS, EXAMPLE_WORLDS } from './files/examples';
 import { detectPlatform } from './files/platform';
 import { exposeTestHooks } from './app/test-hooks';
+import { installPacks } from './packs/index';
+import { exposePackTestHooks } from './packs/test-hooks';
 
-const app = new App(detectPlatform());
+const platform = detectPlatform();
+const app = new App(platform);
 
 const ready = app.start(async () => {
   const world = EXAMPLE_WORLDS.find((e) => e.file === 'office.world.json') ?? EXAMPLE_WORLDS[0];
@@ -18,6 +21,7 @@ const ready = app.start(async () => {
 });
 
 exposeTestHooks(app, ready);
+exposePackTestHooks(app, installPacks(app, platform, ready));
 
 ready.catch((e: unknown) => {
   // Startup failed (no WebGL, a broken build): say so on the page instead of a blank window.

@@ -14,6 +14,7 @@ import { CreateState } from '../create/selection';
 import { ToolsPanel } from '../create/tools-panel';
 import { diagramPane } from '../diagram/index';
 import { editorPanes } from '../editor/index';
+import { packPanes } from '../packs/editor-pane';
 import type { ArcRow } from '../engine/client';
 import { EngineClient } from '../engine/client';
 import { Autosave } from '../files/autosave';
@@ -124,7 +125,7 @@ export class App {
     new ToolsPanel(this.create, this.store);
     new Inspector(this.create, this.store);
     new PlanEditor(this.store);
-    this.panes = new PaneArea(byId('pane-tabs'), byId('pane-body'), [...editorPanes(), diagramPane()], this.paneHost());
+    this.panes = new PaneArea(byId('pane-tabs'), byId('pane-body'), [...editorPanes(), diagramPane(), ...packPanes()], this.paneHost());
     new PointerInput({
       view: this.view,
       create: this.create,

@@ -15,6 +15,9 @@ export function emptyWorld(): WorldSpec {
 }
 
 export class Documents {
+  /** Takes pack files opened with Open… (set by the challenge packs, packs/index.ts). */
+  onPackFile: ((file: OpenedFile) => boolean) | null = null;
+
   constructor(
     private readonly store: Store,
     private readonly platform: Platform,
@@ -39,7 +42,8 @@ export class Documents {
 
   /** Opens a world or a controller from its text; returns true when it was read. */
   openText(file: OpenedFile): boolean {
-    const kind = detectFormat(file.text) ?? (file.name.endsWith('.controller.json') ? 'controller' : 'world');
+    const kind = detectFormat(file.text) ?? (file.name.endsWith('.controller.json') ? 'controller' : file.name.endsWith('.pack.json') ? 'pack' : 'world');
+    if (kind === 'pack' && this.onPackFile) return this.onPackFile(file);
     if (kind === 'controller') {
       const r = parseController(file.text, file.name);
       if (!r.ok) return this.problem(formatProblems(r.problems));

@@ -19,6 +19,27 @@ export interface Platform {
   recentFiles(): Promise<readonly SavedFile[]>;
   readAutosave(): Promise<string | null>;
   writeAutosave(text: string): Promise<void>;
+  /** Small local records by key (challenge-pack progress): the browser's local storage, also in Electron. */
+  readStored(key: string): string | null;
+  /** Returns false when the record could not be written (storage full or disabled). */
+  writeStored(key: string, text: string): boolean;
+}
+
+function readStored(key: string): string | null {
+  try {
+    return localStorage.getItem(key);
+  } catch {
+    return null;
+  }
+}
+
+function writeStored(key: string, text: string): boolean {
+  try {
+    localStorage.setItem(key, text);
+    return true;
+  } catch {
+    return false;
+  }
 }
 
 const AUTOSAVE_KEY = 'layerbot.autosave.v1';
@@ -77,6 +98,8 @@ const browserPlatform: Platform = {
     }
     return Promise.resolve();
   },
+  readStored,
+  writeStored,
 };
 
 function desktopPlatform(api: LayerbotDesktopApi): Platform {
@@ -88,6 +111,8 @@ function desktopPlatform(api: LayerbotDesktopApi): Platform {
     recentFiles: () => api.recentFiles(),
     readAutosave: () => api.readAutosave(),
     writeAutosave: (text) => api.writeAutosave(text),
+    readStored,
+    writeStored,
   };
 }
 
