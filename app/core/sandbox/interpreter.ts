@@ -33,6 +33,32 @@ export const RUN_LIMITS = {
  */
 const MUTATION_TEXT = 'Cannot change an input: inputs are read-only. Make a copy first and change the copy.';
 
+/** Hooks of `resume` for a call run in pieces (the stepper). */
+export interface ResumeHooks {
+  /** Asked after every step while the call runs: true pauses it. */
+  pause(): boolean;
+  /** Nodes whose steps are not counted (the `__block` markers and everything inside them). */
+  readonly free?: ReadonlySet<Interpreter.Node>;
+}
+
+/** The parts of a sandbox the stepper reads between steps (never changes). */
+export interface SandboxInternals {
+  readonly interpreter: Interpreter;
+  readonly converter: Converter;
+  readonly record: CallRecord;
+  /** The pseudo function object of function number `index` (its `node` and `parentScope`). */
+  functionNode(index: number): Obj;
+  /** Steps counted so far in the active call. */
+  steps(): number;
+}
+
+interface ActiveCall {
+  readonly d: Declared;
+  readonly args: readonly unknown[];
+  readonly budget: number;
+  steps: number;
+}
+
 interface Declared {
   readonly fn: CompiledFunction;
   readonly func: Obj;
@@ -42,11 +68,12 @@ interface Declared {
 /** Creates a JS-Interpreter sandbox holding `functions`; throws CompileError for a syntax error. */
 export const createInterpreterSandbox: SandboxFactory = (functions) => new InterpreterSandbox(functions);
 
-class InterpreterSandbox implements Sandbox {
+export class InterpreterSandbox implements Sandbox {
   private it: Interpreter | null;
   private readonly conv: Converter;
   private readonly declared: Declared[];
-  private readonly record: CallRecord = { output: [], outputChars: 0, full: false, block: null };
+  private readonly record: CallRecord = { output: [], outputChars: 0, full: false, block: null, blockCalls: 0 };
+  private active: ActiveCall | null = null;
   /** The input the latest guarded write targeted (to name it in the message). */
   private mutated: Obj | null = null;
   private calls = 0;
@@ -85,6 +112,15 @@ class InterpreterSandbox implements Sandbox {
   }
 
   call(index: number, args: readonly unknown[], budget: number): SandboxResult {
+    this.begin(index, args, budget);
+    return this.resume(null) as SandboxResult;
+  }
+
+  /**
+   * Starts a call without running it: `resume` runs it. `call` is `begin` + `resume(null)`; the
+   * stepper (stepper.ts) resumes with hooks to stop at blocks. One call is active at a time.
+   */
+  begin(index: number, args: readonly unknown[], budget: number): void {
     const it = this.it;
     if (!it) throw new Error('This sandbox has been disposed.');
     const d = this.declared[index];
@@ -96,7 +132,9 @@ class InterpreterSandbox implements Sandbox {
     record.outputChars = 0;
     record.full = false;
     record.block = null;
+    record.blockCalls = 0;
     this.mutated = null;
+    if (this.active) this.reset(it);
 
     const state = new State(d.callNode, it.globalScope);
     // A CallExpression whose callee and arguments are already evaluated (see stepCallExpression).
@@ -106,17 +144,38 @@ class InterpreterSandbox implements Sandbox {
     state['arguments_'] = args.map((a) => this.conv.toInput(a));
     state['n_'] = 0;
     state['doneArgs_'] = true;
+    it.stateStack.push(state);
+    this.active = { d, args, budget, steps: 0 };
+  }
 
+  /**
+   * Runs the active call until it ends (returns its result) or, with hooks, until `hooks.pause()`
+   * (asked after each step) says to stop (returns null; resume again to go on). Steps on `free`
+   * nodes, and steps that push one, do not count against the budget: the stepper's `__block`
+   * markers then cost nothing, so a replay counts exactly the steps of the run.
+   */
+  resume(hooks: ResumeHooks | null): SandboxResult | null {
+    const it = this.it;
+    const call = this.active;
+    if (!it || !call) throw new Error('There is no call to resume.');
+    const { d, args, budget } = call;
     const stack = it.stateStack;
     const { maxStackStates, maxStringLength } = RUN_LIMITS;
-    let steps = 0;
+    const free = hooks?.free ?? null;
+    let steps = call.steps;
     let returned: unknown;
-    stack.push(state);
     try {
       while (stack.length > 1) {
         if (steps >= budget) throw new Abort('budget', `it ran for more than ${formatCount(budget)} steps without finishing. Check its loops: is there one that never ends?`);
-        it.step();
-        steps++;
+        if (free === null) {
+          it.step();
+          steps++;
+        } else {
+          const depth = stack.length;
+          const counted = !free.has(stack[depth - 1].node);
+          it.step();
+          if (counted && !(stack.length === depth + 1 && free.has(stack[depth].node))) steps++;
+        }
         if (stack.length > maxStackStates) {
           throw new Abort('resources', 'its calls went too deep. Check its recursion: does every recursive call get closer to a case that stops?');
         }
@@ -126,24 +185,45 @@ class InterpreterSandbox implements Sandbox {
         if (typeof v === 'string' && v.length > maxStringLength) {
           throw new Abort('resources', `it made a text longer than ${formatCount(maxStringLength)} characters.`);
         }
+        if (hooks !== null && stack.length > 1 && hooks.pause()) {
+          call.steps = steps;
+          return null;
+        }
       }
       returned = stack[0].value;
     } catch (e) {
+      this.active = null;
+      call.steps = steps;
       const failure = this.failure(e, it, d, args);
       this.reset(it);
       return failure;
     }
+    this.active = null;
+    call.steps = steps;
     stack[0].value = undefined;
     try {
-      return { ok: true, value: deepFreeze(this.conv.toNative(returned as Interpreter.Value)), output: record.output, steps };
+      return { ok: true, value: deepFreeze(this.conv.toNative(returned as Interpreter.Value)), output: this.record.output, steps };
     } catch (e) {
       if (!(e instanceof ValueProblem)) throw e;
       return this.fail(e.kind, `it returned a value that cannot be kept: ${e.message}.`);
     }
   }
 
+  /** What the stepper reads between steps: the interpreter, the converter, the active call. */
+  get internals(): SandboxInternals {
+    if (!this.it) throw new Error('This sandbox has been disposed.');
+    return {
+      interpreter: this.it,
+      converter: this.conv,
+      record: this.record,
+      functionNode: (index) => this.declared[index].func,
+      steps: () => this.active?.steps ?? 0,
+    };
+  }
+
   dispose(): void {
     this.it = null;
+    this.active = null;
     this.conv.clear();
   }
 

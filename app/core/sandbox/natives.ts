@@ -21,6 +21,8 @@ export interface CallRecord {
   full: boolean;
   /** The id passed to the latest `__block` call. */
   block: string | null;
+  /** How many `__block` calls the call made (the stepper watches it to stop at blocks). */
+  blockCalls: number;
 }
 
 /** Printing in a runaway loop must not fill the host's memory or the history. */
@@ -49,6 +51,7 @@ export function bindNatives(it: Interpreter, conv: Converter, record: CallRecord
   });
   bind('__block', (id) => {
     record.block = typeof id === 'string' ? id : String(id);
+    record.blockCalls++;
     return undefined;
   });
   for (const [name, entry] of Object.entries(API) as [string, ApiEntry][]) bind(name, helper(it, conv, name, entry));
