@@ -30,6 +30,7 @@ export const API_LABELS: Partial<Record<ApiName, string>> = {
   cellCenter: 'centre of cell %2 in grid %1',
   inGrid: 'cell %2 is inside grid %1',
   cellsOfWall: 'cells that wall %2 passes through in grid %1',
+  cellsNearWall: 'cells of grid %1 closer than %3 to wall %2',
   newGrid: 'new table for grid %1 with every cell set to %2',
   neighbourCell: 'cell next to %1 after action %2',
   copyList: 'copy of list %1',

@@ -35,6 +35,17 @@ export interface GridSpec {
 
 const p = (name: string, type: ValueType): ApiParam => ({ name, type });
 
+/**
+ * A list of n entries made by `entry`, built by appending: V8 keeps such a list "packed", where
+ * `new Array(n)` makes a "holey" one, whose every read costs about ten times more once SES's
+ * `lockdown()` has frozen the array prototypes (the fast engine's realm).
+ */
+function packed<T>(n: number, entry: () => T): T[] {
+  const a: T[] = [];
+  for (let i = 0; i < n; i++) a.push(entry());
+  return a;
+}
+
 function gridOf(x0: number, y0: number, x1: number, y1: number, cell: number): GridSpec {
   if (!(cell > 0)) throw new RangeError('The cell size must be greater than 0.');
   const cols = Math.max(1, Math.ceil((x1 - x0) / cell));
@@ -65,6 +76,32 @@ function cellsOfSegment(grid: GridSpec, s: Segment): [number, number][] {
     if (!seen.has(key)) {
       seen.add(key);
       out.push(c);
+    }
+  }
+  return out;
+}
+
+/** The distance from a point to the nearest point of a segment. */
+function distanceToSegment(point: Point, s: Segment): number {
+  const [[x0, y0], [x1, y1]] = s;
+  const dx = x1 - x0;
+  const dy = y1 - y0;
+  const length2 = dx * dx + dy * dy;
+  const t = length2 === 0 ? 0 : Math.max(0, Math.min(1, ((point[0] - x0) * dx + (point[1] - y0) * dy) / length2));
+  return Math.hypot(point[0] - (x0 + t * dx), point[1] - (y0 + t * dy));
+}
+
+/** The cells a segment passes through, and every cell whose centre is closer to it than `margin`. */
+function cellsNearSegment(grid: GridSpec, s: Segment, margin: number): [number, number][] {
+  const out = cellsOfSegment(grid, s);
+  if (!(margin > 0)) return out;
+  const seen = new Set(out.map((c) => c[1] * grid.cols + c[0]));
+  const [c0, r0] = cellOf(grid, [Math.min(s[0][0], s[1][0]) - margin, Math.min(s[0][1], s[1][1]) - margin]);
+  const [c1, r1] = cellOf(grid, [Math.max(s[0][0], s[1][0]) + margin, Math.max(s[0][1], s[1][1]) + margin]);
+  for (let r = Math.max(0, r0); r <= Math.min(grid.rows - 1, r1); r++) {
+    for (let c = Math.max(0, c0); c <= Math.min(grid.cols - 1, c1); c++) {
+      const centre: Point = [grid.x0 + (c + 0.5) * grid.cell, grid.y0 + (r + 0.5) * grid.cell];
+      if (!seen.has(r * grid.cols + c) && distanceToSegment(centre, s) < margin) out.push([c, r]);
     }
   }
   return out;
@@ -189,12 +226,19 @@ export const API = {
     doc: 'Every cell [column, row] that a wall passes through.',
     fn: (grid: GridSpec, wall: Segment) => cellsOfSegment(grid, wall),
   },
+  cellsNearWall: {
+    category: 'grid',
+    params: [p('grid', 'record'), p('wall', 'list'), p('distance', 'number')],
+    returns: 'list',
+    doc: 'Every cell [column, row] that a wall passes through, and every cell whose centre is closer to the wall than a distance.',
+    fn: (grid: GridSpec, wall: Segment, margin: number) => cellsNearSegment(grid, wall, margin),
+  },
   newGrid: {
     category: 'grid',
     params: [p('grid', 'record'), p('value', 'any')],
     returns: 'list',
     doc: 'A table with one entry per cell (a list of rows, each a list of columns), every entry set to a value.',
-    fn: (grid: GridSpec, value: unknown) => Array.from({ length: grid.rows }, () => new Array<unknown>(grid.cols).fill(value)),
+    fn: (grid: GridSpec, value: unknown) => packed(grid.rows, () => packed(grid.cols, () => value)),
   },
   goalNames: {
     category: 'world',

@@ -62,6 +62,20 @@ describe('API helpers', () => {
     expect(cell).toEqual([6, 6]);
   });
 
+  test('cellsNearWall: the cells a wall passes through, and the cells whose centre is closer to it than a distance', () => {
+    // Cells of 1 from (0, 0); the wall runs along y = 5 from x = 2 to x = 4.
+    const near = (margin: number) => {
+      const cells = valueOf(run([], `var g = { x0: 0, y0: 0, cell: 1, cols: 10, rows: 10 }; return cellsNearWall(g, [[2, 5], [4, 5]], ${margin});`)) as number[][];
+      return cells.map((c) => c.join(',')).sort();
+    };
+    expect(near(0)).toEqual(['2,5', '3,5', '4,5']);
+    // Centres (x + 0.5, y + 0.5): row 4 and row 5 are 0.5 from the wall, rows 3 and 6 are 1.5 away.
+    expect(near(1)).toEqual(['1,4', '1,5', '2,4', '2,5', '3,4', '3,5', '4,4', '4,5'].sort());
+    expect(near(1.6)).toContain('3,3');
+    expect(near(1.6)).toContain('3,6');
+    expect(near(1.6)).not.toContain('0,6');
+  });
+
   test('a wrong argument gets a message naming the helper and the input', () => {
     expect(run([], 'return distance(null, [1, 2]);')).toMatchObject({
       ok: false,
