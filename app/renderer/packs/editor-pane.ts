@@ -367,8 +367,8 @@ export class PackEditorPane implements ControllerPane {
       const which = select(
         'crit-reach-which',
         [
-          ['plan', `the world’s plan (${c.world.plan.join(', ') || 'empty'})`],
-          ['goals', 'the goals ticked below'],
+          ['plan', 'the plan'],
+          ['goals', 'these goals:'],
         ],
         k.reach.goals ? 'goals' : 'plan',
         (v) => set((x) => ({ ...x, reach: { ...x.reach, goals: v === 'plan' ? null : (x.reach.goals ?? c.world.goals.map((g) => g.name)) } })),
@@ -385,6 +385,7 @@ export class PackEditorPane implements ControllerPane {
       const row = el('div', 'pe-sub');
       row.append(which, order);
       reach.append(row);
+      if (!k.reach.goals) reach.append(el('div', 'pe-sub pe-note', `Plan: ${c.world.plan.join(' → ') || 'empty (list the goals instead)'}`));
       if (k.reach.goals) {
         const goals = el('div', 'pe-grid pe-sub');
         for (const g of c.world.goals) {
@@ -417,8 +418,8 @@ export class PackEditorPane implements ControllerPane {
       select(
         'crit-max-blocks-scope',
         [
-          ['editable', 'the editable functions'],
-          ['all', 'the whole controller'],
+          ['editable', 'editable functions'],
+          ['all', 'all functions'],
         ],
         k.maxBlocks.scope,
         (v) => set((x) => ({ ...x, maxBlocks: { ...x.maxBlocks, scope: v === 'all' ? 'all' : 'editable' } })),

@@ -70,6 +70,7 @@ export class PackSession {
       setStudent: (name) => this.update(setStudent(this.need(), name), true),
       close: () => this.close(),
       backToEditor: () => this.onBackToEditor?.(),
+      dismissProblems: () => this.dismissProblems(),
     });
     app.store.onController.on(() => this.controllerChanged());
     app.engine.onStatus.on((s) => {

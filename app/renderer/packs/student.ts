@@ -20,6 +20,7 @@ export interface StudentActions {
   setStudent(name: string): void;
   close(): void;
   backToEditor(): void;
+  dismissProblems(): void;
 }
 
 export interface StudentState {
@@ -141,7 +142,8 @@ export class StudentView {
       row.append(check, verdictLine);
       const row2 = el('div', 'row pack-submit');
       row2.append(name, exp);
-      parts.push(title, bar, list, row, row2);
+      parts.push(title, bar, list, row);
+      if (!s.preview) parts.push(row2);
       if (s.preview) {
         const back = el('button', 'small', 'Back to the pack editor');
         back.id = 'pack-back-to-editor';
@@ -160,7 +162,13 @@ export class StudentView {
     const box = el('div', 'pack-problems');
     box.id = 'pack-problems';
     box.setAttribute('role', 'alert');
-    box.append(el('b', undefined, `${p.file} could not be opened as a pack`));
+    const dismiss = el('button', 'pack-icon-btn', '×');
+    dismiss.title = 'Dismiss';
+    dismiss.setAttribute('aria-label', 'Dismiss');
+    dismiss.addEventListener('click', () => this.actions.dismissProblems());
+    const head = el('div', 'pack-problems-head');
+    head.append(el('b', undefined, `${p.file} could not be opened as a pack`), dismiss);
+    box.append(head);
     const ul = el('ul');
     const shown = p.list.slice(0, 6);
     for (const q of shown) {
