@@ -12,6 +12,7 @@ import { PlanEditor } from '../create/plan-editor';
 import { PointerInput } from '../create/pointer';
 import { CreateState } from '../create/selection';
 import { ToolsPanel } from '../create/tools-panel';
+import { installDebugger } from '../debugger/index';
 import { diagramPane } from '../diagram/index';
 import { editorPanes } from '../editor/index';
 import { packPanes } from '../packs/editor-pane';
@@ -122,6 +123,7 @@ export class App {
     this.overlay = new OverlayPicker(() => this.showArcs(true));
     this.summary = new RunSummary();
     new DockTabs(byId('dock'));
+    installDebugger(this);
     new ToolsPanel(this.create, this.store);
     new Inspector(this.create, this.store);
     new PlanEditor(this.store);

@@ -31,7 +31,15 @@ export class ArcTable {
       if (r.previousTick) from.appendChild(el('span', 'prev', 'previous tick'));
       const value = el('td', 'value', shortValue(r.value));
       value.title = shortValue(r.value);
-      tr.append(from, el('td', 'to', r.to), el('td', 'input', r.input), value, el('td', 'changed-cell', r.changed ? 'changed' : ''));
+      const to = el('td', 'to');
+      // The debugger (debugger/index.ts) handles these clicks: it replays the function at this tick.
+      const step = el('button', 'step-into');
+      step.dataset.stepInto = r.to;
+      step.title = `Step into ${r.to}: replay it at tick ${tick}, block by block`;
+      step.setAttribute('aria-label', `Step into ${r.to}`);
+      step.innerHTML = '<svg viewBox="0 0 24 24" aria-hidden="true"><path d="M6 5v14l9-7z M17 5h2v14h-2z"/></svg>';
+      to.append(step, r.to);
+      tr.append(from, to, el('td', 'input', r.input), value, el('td', 'changed-cell', r.changed ? 'changed' : ''));
       body.appendChild(tr);
     }
     table.appendChild(body);
