@@ -78,7 +78,8 @@ function randomState(r: RandomSourceSpec): State {
   return { type: RANDOM_SOURCE_BLOCK, fields: { NAME: r.name, TYPE: r.type, SEED: r.seed, MIN: r.min ?? 0, MAX: r.max ?? 9 } };
 }
 
-function layerState(layer: LayerSpec): State {
+/** A layer's block state (with its variables, random sources and functions), as the workspace holds it. */
+export function layerState(layer: LayerSpec): State {
   const inputs: Record<string, { block: State }> = {};
   const vars = statement(layer.variables.map((v) => ({ type: LAYER_VARIABLE_DEF_BLOCK, fields: { NAME: v.name, VALUE: JSON.stringify(v.value) } })));
   const randoms = statement(layer.randomSources.map(randomState));

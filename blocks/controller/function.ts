@@ -8,7 +8,7 @@
  *
  * This file has no side effects.
  */
-import type * as Blockly from 'blockly/core';
+import * as Blockly from 'blockly/core';
 import type { JsonValue } from '../../app/core/values';
 import { VALUE_TYPES } from '../../app/core/values';
 import { FIELD_NAME_DROPDOWN } from '../fields/name-dropdown';
@@ -27,6 +27,24 @@ export interface FunctionExtraState {
 
 type WithExtra = Blockly.Block & { lbExtra?: FunctionExtraState };
 
+/** The name of the function block's "open" button field (not saved: it is an image). */
+export const OPEN_FIELD = 'OPEN';
+
+/** A small "open" arrow (an SVG data URI, so it loads offline and under the page's CSP). */
+const OPEN_ICON =
+  'data:image/svg+xml;utf8,' +
+  encodeURIComponent(
+    '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 16 16"><circle cx="8" cy="8" r="8" fill="white" fill-opacity="0.92"/>' +
+      '<path d="M6.5 4.5 10 8l-3.5 3.5" fill="none" stroke="#1c2333" stroke-width="1.9" stroke-linecap="round" stroke-linejoin="round"/></svg>',
+  );
+
+let openHandler: ((block: Blockly.Block) => void) | null = null;
+
+/** What a click on a function block's "open" button does (the controller editor sets it). */
+export function setOpenFunctionHandler(handler: ((block: Blockly.Block) => void) | null): void {
+  openHandler = handler;
+}
+
 export const functionBlocks: BlockFamily = {
   definitions: [
     {
@@ -43,6 +61,7 @@ export const functionBlocks: BlockFamily = {
       colour: COLOURS.function,
       tooltip: 'A function: it takes its inputs (arcs) and gives one output each tick. Open it to edit its blocks.',
       mutator: 'lb_controller_function_state',
+      extensions: ['lb_controller_function_open'],
     },
     {
       type: ARC_BLOCK,
@@ -60,6 +79,18 @@ export const functionBlocks: BlockFamily = {
     },
   ],
   extensions: {
+    lb_controller_function_open(this: Blockly.Block) {
+      // An "open" button at the end of the first row: the editor opens the function's blocks.
+      const image = { type: 'field_image', src: OPEN_ICON, width: 16, height: 16, alt: 'open blocks' };
+      const field = Blockly.fieldRegistry.fromJson(image) as Blockly.FieldImage | null;
+      if (!field) return;
+      field.setOnClickHandler((f) => {
+        const block = f.getSourceBlock();
+        if (block && openHandler) openHandler(block);
+      });
+      field.setTooltip('Open this function\'s blocks');
+      this.inputList[0]?.appendField(field, OPEN_FIELD);
+    },
     lb_arc_initial_visibility(this: Blockly.Block) {
       // The initial value matters only for previous-tick sources: show it only for them.
       const showInitial = (block: Blockly.Block, source: unknown) => block.getField('INITIAL')?.setVisible(String(source ?? '').startsWith('previous:'));

@@ -1,7 +1,11 @@
 /**
  * A small read-only window into the app for the browser tests (tests/e2e) and for measuring:
- * where a world point is on screen, which tick is shown, the frame rate. It changes nothing.
+ * where a world point is on screen, which tick is shown, the frame rate, what the controller editor
+ * shows. It changes nothing, except `setRestrictions` (a challenge's locks, for the editor's tests).
  */
+import type { ControllerSpec } from '../../core/controller/model';
+import { editorFunctionBlockId, editorTestState } from '../editor/index';
+import type { EditRestrictions } from '../panes/types';
 import type { App } from './app';
 
 export interface LayerbotTestHooks {
@@ -26,6 +30,14 @@ export interface LayerbotTestHooks {
   profile(): number;
   /** The page position (CSS pixels) of a world point in the world view. */
   toPage(x: number, y: number): { x: number; y: number };
+  /** The controller editor: what its Blocks pane shows (view, open function, mode, toolbox...). */
+  editor(): ReturnType<typeof editorTestState>;
+  /** The controller editor's block id of a function (its block in the layers view). */
+  editorBlockId(layer: string, fn: string): string | null;
+  /** The controller as the app holds it (what the engine runs after the next load). */
+  controller(): ControllerSpec | null;
+  /** Sets a challenge's restrictions (locks, toolbox), as the packs view does. */
+  setRestrictions(r: EditRestrictions | null): void;
 }
 
 declare global {
@@ -68,5 +80,9 @@ export function exposeTestHooks(app: App, ready: Promise<void>): void {
       const p = app.view.camera.toScreen(x, y);
       return { x: r.left + p.x, y: r.top + p.y };
     },
+    editor: () => editorTestState(),
+    editorBlockId: (layer, fn) => editorFunctionBlockId({ layer, fn }),
+    controller: () => app.store.controller,
+    setRestrictions: (r) => app.setRestrictions(r),
   };
 }
