@@ -66,8 +66,8 @@ describe('example controllers (blocks)', () => {
   });
 
   test('value-iteration: completes the office plan and escapes both traps without crashing', () => {
-    expect(run('value-iteration', office)).toEqual({ ticks: 337, crashTick: null, goals: [152, 204, 246, 337], error: null });
-    expect(run('value-iteration', trap)).toEqual({ ticks: 128, crashTick: null, goals: [128], error: null });
-    expect(run('value-iteration', trapNew)).toEqual({ ticks: 145, crashTick: null, goals: [145], error: null });
+    expect(run('value-iteration', office)).toEqual({ ticks: 290, crashTick: null, goals: [120, 162, 209, 290], error: null });
+    expect(run('value-iteration', trap)).toEqual({ ticks: 117, crashTick: null, goals: [117], error: null });
+    expect(run('value-iteration', trapNew)).toEqual({ ticks: 141, crashTick: null, goals: [141], error: null });
   });
 });

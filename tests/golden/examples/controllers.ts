@@ -155,16 +155,18 @@ export function valueIterationController(basic: ControllerSpec): ControllerSpec 
   };
   const vi: LayerSpec = {
     name: 'Value iteration',
-    description: 'Plans on a grid laid over the world: which cells hold walls and the goal, the value of every action in every cell (value iteration), and the best action in the robot\'s cell.',
+    description:
+      'Plans on a grid laid over the world: which cells are blocked and which holds the goal, the value of every action in every cell (value iteration), and the best action in the robot\'s cell. CELL_SIZE: the side of a cell, in world units. WALL_MARGIN: a cell is blocked when a wall passes through it or its centre is closer than this to a wall, so the plan keeps the robot that far from walls (3: the whisker reaches 3 units to the right of the robot, so on the plan it stays clear of walls). ACTION_COST: what each move costs. GOAL_REWARD: the value of the goal\'s cell.',
     variables: [
       { name: 'CELL_SIZE', value: 4 },
+      { name: 'WALL_MARGIN', value: 3 },
       { name: 'ACTION_COST', value: 1 },
       { name: 'GOAL_REWARD', value: 1000 },
     ],
     randomSources: [],
     functions: [
       fn('grid', 'The grid of CELL_SIZE cells over the walls, goals and the robot, made on the first tick and kept.', 'record', [prev('previousGrid', 'grid', false), world('walls', 'walls'), world('goals', 'goals'), world('robotPos', 'robotPos')], viBodies.grid),
-      fn('getHasWall', 'A table of the grid: true in every cell a wall passes through.', 'list', [world('walls', 'walls'), fnArc('grid', 'grid')], viBodies.getHasWall),
+      fn('getHasWall', 'A table of the grid: true in every blocked cell, that is every cell a wall passes through or whose centre is closer than WALL_MARGIN to a wall.', 'list', [world('walls', 'walls'), fnArc('grid', 'grid')], viBodies.getHasWall),
       fn('getHasGoal', 'A table of the grid: true in the cell of the next goal.', 'list', [fnArc('todo', 'todo'), world('goals', 'goals'), fnArc('grid', 'grid')], viBodies.getHasGoal),
       fn('currentState', 'The cell [column, row] the robot is in.', 'point', [world('robotPos', 'robotPos'), fnArc('grid', 'grid')], viBodies.currentState),
       fn(
@@ -174,12 +176,12 @@ export function valueIterationController(basic: ControllerSpec): ControllerSpec 
         [prev('previousQValues', 'valueIteration', []), fnArc('hasWall', 'getHasWall'), fnArc('hasGoal', 'getHasGoal'), fnArc('todoChanged', 'todoChanged'), fnArc('grid', 'grid')],
         viBodies.valueIteration,
       ),
-      fn('chooseAction', 'The best action in the robot\'s cell: 0 north, 1 east, 2 south, 3 west, 4 stay.', 'number', [fnArc('qValues', 'valueIteration'), fnArc('currentState', 'currentState'), fnArc('grid', 'grid')], viBodies.chooseAction),
+      fn('chooseAction', 'The best action in the robot\'s cell: 0 north, 1 east, 2 south, 3 west, 4 stay. Of two equally good actions, the one that points closer to the goal wins (so the robot cuts across open ground and turns early at corners).', 'number', [fnArc('qValues', 'valueIteration'), fnArc('currentState', 'currentState'), fnArc('grid', 'grid'), world('robotPos', 'robotPos'), fnArc('todo', 'todo'), world('goals', 'goals')], viBodies.chooseAction),
     ],
   };
   const steer = fn(
     'steer',
-    'Left when the whisker touches a wall; otherwise turn toward the centre of the cell the chosen action leads to (or toward the goal when the action is to stay): left or right when it is more than STRAIGHT degrees off, else straight.',
+    'Left when the whisker touches a wall; otherwise turn toward the centre of the cell the chosen action leads to, or toward the goal itself when that cell holds the goal or the action is to stay: left or right when it is more than STRAIGHT degrees off, else straight.',
     'string',
     [
       world('robotPos', 'robotPos'),
@@ -187,6 +189,7 @@ export function valueIterationController(basic: ControllerSpec): ControllerSpec 
       fnArc('whisker', 'whiskerOn'),
       fnArc('currentState', 'currentState'),
       fnArc('action', 'chooseAction'),
+      fnArc('hasGoal', 'getHasGoal'),
       fnArc('todo', 'todo'),
       world('goals', 'goals'),
       fnArc('grid', 'grid'),
@@ -195,7 +198,8 @@ export function valueIterationController(basic: ControllerSpec): ControllerSpec 
   );
   return {
     name: 'Value iteration',
-    description: 'Four layers after the original design (figure 2.5): the top layer keeps the to-do list, a value-iteration layer plans on a grid, the middle layer steers toward the next cell of the plan, and the bottom layer is the basic controller\'s. It finds its way out of the traps that defeat the basic controller.',
+    description:
+      'Four layers after the original design (figure 2.5): the top layer keeps the to-do list, a value-iteration layer plans on a grid, the middle layer steers toward the next cell of the plan, and the bottom layer is the basic controller\'s. It finds its way out of the traps that defeat the basic controller and through the maze, keeping WALL_MARGIN away from walls.',
     bodyCommand: b.bodyCommand,
     layers: [top, vi, { ...middle, functions: [steer, arrived] }, bottom],
   };

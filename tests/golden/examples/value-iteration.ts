@@ -1,8 +1,10 @@
 /**
  * The value-iteration controller's new functions as blocks (the original design, figure 2.5 and
- * section 2.2.6): the grid over the world, getHasWall, getHasGoal, currentState, valueIteration
- * (re-run only when the to-do list changes; the Q-values travel on a previous-tick arc),
- * chooseAction, and a steer that heads for the centre of the cell the chosen action leads to.
+ * section 2.2.6): the grid over the world, getHasWall (cells a wall passes through or comes within
+ * WALL_MARGIN of), getHasGoal, currentState, valueIteration (re-run only when the to-do list
+ * changes; the Q-values travel on a previous-tick arc), chooseAction (ties go to the action that
+ * points closer to the goal), and a steer that heads for the centre of the cell the chosen action
+ * leads to, or for the goal itself once that cell holds it.
  */
 import type { BlockState } from '../../../blocks/build';
 import { BodyBuilder } from '../../../blocks/build';
@@ -57,7 +59,7 @@ export const viBodies: Record<string, BodyMaker> = {
       [
         b.set('hasWall', b.api('newGrid', b.input('grid'), b.bool(false))),
         b.forEach('wall', b.input('walls'), [
-          b.forEach('cell', b.api('cellsOfWall', b.input('grid'), b.get('wall')), [
+          b.forEach('cell', b.api('cellsNearWall', b.input('grid'), b.get('wall'), b.layerVar('WALL_MARGIN')), [
             b.tableSet(b.get('hasWall'), b.cellPart('COL', b.get('cell')), b.cellPart('ROW', b.get('cell')), b.bool(true)),
           ]),
         ]),
@@ -119,13 +121,27 @@ export const viBodies: Record<string, BodyMaker> = {
   },
   chooseAction() {
     const b = new BodyBuilder('chooseAction');
+    const qOf = (action: BlockState) => b.item(b.get('q'), b.arith('ADD', action, b.num(1)));
     return b.body(
       [
         b.if([[b.not(b.api('inGrid', b.input('grid'), b.input('currentState'))), [b.ret(b.action(4))]]]),
         b.set('q', b.tableGet(b.input('qValues'), b.cellPart('COL', b.input('currentState')), b.cellPart('ROW', b.input('currentState')))),
+        b.set('goalDirection', b.api('directionTo', b.input('robotPos'), b.api('goalPosition', b.input('goals'), b.first(b.input('todo'))))),
         b.set('best', b.action(4)),
+        b.set('bestTurn', b.num(360)),
         b.forRange('action', b.num(0), b.num(3), b.num(1), [
-          b.if([[b.compare('GT', b.item(b.get('q'), b.arith('ADD', b.get('action'), b.num(1))), b.item(b.get('q'), b.arith('ADD', b.get('best'), b.num(1)))), [b.set('best', b.get('action'))]]]),
+          // How far the action's direction (north 90, east 0, south -90, west -180 degrees) is
+          // from the goal's: of two equally good actions, the one that points closer to the goal wins.
+          b.set('turn', b.single('ABS', b.api('normalizeAngle', b.arith('MINUS', b.arith('MINUS', b.num(90), b.arith('MULTIPLY', b.num(90), b.get('action'))), b.get('goalDirection'))))),
+          b.if([
+            [
+              b.or(
+                b.compare('GT', qOf(b.get('action')), qOf(b.get('best'))),
+                b.and(b.compare('EQ', qOf(b.get('action')), qOf(b.get('best'))), b.compare('LT', b.get('turn'), b.get('bestTurn'))),
+              ),
+              [b.set('best', b.get('action')), b.set('bestTurn', b.get('turn'))],
+            ],
+          ]),
         ]),
       ],
       b.get('best'),
@@ -136,10 +152,19 @@ export const viBodies: Record<string, BodyMaker> = {
     return b.body(
       [
         b.if([[b.input('whisker'), [b.ret(b.str('left'))]]]),
-        b.if(
-          [[b.compare('EQ', b.input('action'), b.action(4)), [b.set('goal', b.api('goalPosition', b.input('goals'), b.first(b.input('todo'))))]]],
-          [b.set('goal', b.api('cellCenter', b.input('grid'), b.api('neighbourCell', b.input('currentState'), b.input('action'))))],
-        ),
+        // Head for the centre of the next cell of the plan, or for the goal itself once it is in
+        // the next cell (or in this one: the action is to stay).
+        b.set('nextCell', b.api('neighbourCell', b.input('currentState'), b.input('action'))),
+        b.set('goal', b.api('cellCenter', b.input('grid'), b.get('nextCell'))),
+        b.if([
+          [
+            b.or(
+              b.compare('EQ', b.input('action'), b.action(4)),
+              b.and(b.api('inGrid', b.input('grid'), b.get('nextCell')), b.tableGet(b.input('hasGoal'), b.cellPart('COL', b.get('nextCell')), b.cellPart('ROW', b.get('nextCell')))),
+            ),
+            [b.set('goal', b.api('goalPosition', b.input('goals'), b.first(b.input('todo'))))],
+          ],
+        ]),
         ...steerTowardsGoal(b),
       ],
       b.str('straight'),
