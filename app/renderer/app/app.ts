@@ -166,6 +166,7 @@ export class App {
         if (this.stepIntoHandler) this.stepIntoHandler(layer, fn);
         else this.store.notice('The step-by-step debugger is not available.', 'error');
       },
+      openFunction: (layer, fn) => this.panes.openFunction(layer, fn),
     };
   }
 

@@ -63,6 +63,16 @@ export class PaneArea {
     return false;
   }
 
+  /** Asks every pane to open a function; brings the first that shows it to the front. */
+  openFunction(layer: string, fn: string): boolean {
+    let shown: string | null = null;
+    for (const { pane } of this.panels.values()) {
+      if (pane.openFunction?.(layer, fn) && shown === null) shown = pane.id;
+    }
+    if (shown !== null) this.show(shown);
+    return shown !== null;
+  }
+
   /** Shows the debugger's position in every pane that can; brings the first to the front. */
   highlightStep(point: StepPoint | null): void {
     let shown = false;

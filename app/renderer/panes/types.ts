@@ -44,6 +44,11 @@ export interface PaneHost {
   onRestrictionsChanged(fn: (r: EditRestrictions | null) => void): Unsubscribe;
   /** Replays a function at the selected tick in the step-by-step debugger (block by block). */
   stepInto(layer: string, fn: string): void;
+  /**
+   * Asks the panes to open a function for editing (the diagram's click on an oval): each pane's
+   * `openFunction` is called; the first that returns true comes to the front. False when none did.
+   */
+  openFunction(layer: string, fn: string): boolean;
 }
 
 /** A challenge's limits on editing, as the controller editor applies them. */
@@ -82,4 +87,9 @@ export interface ControllerPane {
    * highlight. Returns true when this pane shows it.
    */
   highlightStep?(point: StepPoint | null): boolean;
+  /**
+   * Opens a function (the Blocks pane shows its blocks). Returns true when this pane shows it; the
+   * app then brings the pane to the front. Panes that only mark the function return false.
+   */
+  openFunction?(layer: string, fn: string): boolean;
 }
