@@ -26,6 +26,7 @@ export const API_LABELS: Partial<Record<ApiName, string>> = {
   goalPosition: 'position of goal named %2 in goals %1',
   goalNames: 'names of goals %1',
   makeGrid: 'grid over walls %1 goals %2 robot at %3 cell size %4',
+  makeGridWithRoom: 'grid over walls %1 goals %2 robot at %3 cell size %4 with room %5 around',
   cellOf: 'cell of point %2 in grid %1',
   cellCenter: 'centre of cell %2 in grid %1',
   inGrid: 'cell %2 is inside grid %1',

@@ -54,6 +54,15 @@ function gridOf(x0: number, y0: number, x1: number, y1: number, cell: number): G
   return { x0, y0, cell, cols, rows };
 }
 
+/** A grid over the walls, goals and robot, with `room` units and one cell more around them. */
+function gridAround(walls: readonly Segment[], goals: readonly { x: number; y: number }[], robot: Point, cell: number, room: number): GridSpec {
+  const xs = [robot[0], ...goals.map((g) => g.x), ...walls.flatMap((w) => [w[0][0], w[1][0]])];
+  const ys = [robot[1], ...goals.map((g) => g.y), ...walls.flatMap((w) => [w[0][1], w[1][1]])];
+  const x0 = Math.floor((Math.min(...xs) - room) / cell - 1) * cell;
+  const y0 = Math.floor((Math.min(...ys) - room) / cell - 1) * cell;
+  return gridOf(x0, y0, Math.max(...xs) + room + cell, Math.max(...ys) + room + cell, cell);
+}
+
 /** The cell [col, row] that holds a point (it may lie outside the grid). */
 function cellOf(grid: GridSpec, point: Point): [number, number] {
   return [Math.floor((point[0] - grid.x0) / grid.cell), Math.floor((point[1] - grid.y0) / grid.cell)];
@@ -190,13 +199,14 @@ export const API = {
     params: [p('walls', 'list'), p('goals', 'list'), p('robotPos', 'point'), p('cellSize', 'number')],
     returns: 'record',
     doc: 'A grid of square cells covering the walls, the goals and the robot, with a margin of one cell.',
-    fn: (walls: readonly Segment[], goals: readonly { x: number; y: number }[], robot: Point, cell: number) => {
-      const xs = [robot[0], ...goals.map((g) => g.x), ...walls.flatMap((w) => [w[0][0], w[1][0]])];
-      const ys = [robot[1], ...goals.map((g) => g.y), ...walls.flatMap((w) => [w[0][1], w[1][1]])];
-      const x0 = Math.floor(Math.min(...xs) / cell - 1) * cell;
-      const y0 = Math.floor(Math.min(...ys) / cell - 1) * cell;
-      return gridOf(x0, y0, Math.max(...xs) + cell, Math.max(...ys) + cell, cell);
-    },
+    fn: (walls: readonly Segment[], goals: readonly { x: number; y: number }[], robot: Point, cell: number) => gridAround(walls, goals, robot, cell, 0),
+  },
+  makeGridWithRoom: {
+    category: 'grid',
+    params: [p('walls', 'list'), p('goals', 'list'), p('robotPos', 'point'), p('cellSize', 'number'), p('room', 'number')],
+    returns: 'record',
+    doc: 'A grid of square cells covering the walls, the goals and the robot, with at least a distance of room around them, plus one cell.',
+    fn: (walls: readonly Segment[], goals: readonly { x: number; y: number }[], robot: Point, cell: number, room: number) => gridAround(walls, goals, robot, cell, room),
   },
   cellOf: {
     category: 'grid',

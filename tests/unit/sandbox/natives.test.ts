@@ -62,6 +62,11 @@ describe('API helpers', () => {
     expect(cell).toEqual([6, 6]);
   });
 
+  test('makeGridWithRoom leaves at least the room asked for, and one cell more, around the walls', () => {
+    const body = 'var a = makeGrid(walls, [], [5, 5], 2); var b = makeGridWithRoom(walls, [], [5, 5], 2, 3); var c = makeGridWithRoom(walls, [], [5, 5], 2, 0); return [a.x0, a.cols, b.x0, b.y0, b.cols, b.rows, c.x0 === a.x0 && c.cols === a.cols];';
+    expect(valueOf(run(['walls'], body, [walls]))).toEqual([-2, 7, -6, -6, 11, 11, true]);
+  });
+
   test('cellsNearWall: the cells a wall passes through, and the cells whose centre is closer to it than a distance', () => {
     // Cells of 1 from (0, 0); the wall runs along y = 5 from x = 2 to x = 4.
     const near = (margin: number) => {
