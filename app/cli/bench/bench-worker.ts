@@ -1,6 +1,7 @@
 /**
- * The benchmark's worker thread: the fast engine's figures, measured in one locked-down realm, with
- * the plain-JavaScript baseline run in the same realm on the same generated code.
+ * The benchmark's worker thread: the fast engine's figures, measured in one locked-down realm.
+ * The plain-JavaScript baseline runs in the parent's realm, which is not locked down (see
+ * plain-sandbox.ts), alternating with the replans timed here.
  */
 import { setFlagsFromString, getHeapStatistics } from 'node:v8';
 import { runInNewContext } from 'node:vm';
@@ -8,11 +9,9 @@ import { parentPort } from 'node:worker_threads';
 import { createSesSandbox, lockdownForSandbox } from '../../core/sandbox/ses';
 import type { Sandbox } from '../../core/sandbox/types';
 import { Session } from '../../core/session/session';
-import { createPlainSandbox } from './plain-sandbox';
 import { bodiesFrom } from '../fast-worker-support';
-import { median, ticksPerSecond, timeMs, worstSeekMs } from './measure';
-import type { BenchJob, FastFigures } from './protocol';
-import { VI_SIZES } from './protocol';
+import { ticksPerSecond, timeMs, worstSeekMs } from './measure';
+import type { BenchJob, BenchReply, BenchRequest, FastFigures } from './protocol';
 import { viArguments } from './vi-setup';
 
 // A collector to call between heap measurements (taken before lockdown freezes the realm).
@@ -20,12 +19,18 @@ setFlagsFromString('--expose-gc');
 const gc = runInNewContext('gc') as () => void;
 lockdownForSandbox();
 
-/** Median replan time of `sandbox`'s function 0 on an n x n grid. */
-function replanMs(sandbox: Sandbox, n: number, runs: number): number {
+let job: BenchJob | null = null;
+let fast: Sandbox | null = null;
+
+/** Times of `runs` replans of the fast sandbox on an n x n grid, after `warmup` untimed ones. */
+function replans(n: number, runs: number, warmup: number): number[] {
+  const sandbox = fast as Sandbox;
   const args = viArguments(n);
-  const check = sandbox.call(0, args, 1e12);
-  if (!check.ok) throw new Error(`valueIteration failed on a ${n} x ${n} grid: ${check.message}`);
-  return median(Array.from({ length: runs }, () => timeMs(() => sandbox.call(0, args, 1e12))));
+  for (let i = 0; i < warmup; i++) {
+    const check = sandbox.call(0, args, 1e12);
+    if (!check.ok) throw new Error(`valueIteration failed on a ${n} x ${n} grid: ${check.message}`);
+  }
+  return Array.from({ length: runs }, () => timeMs(() => sandbox.call(0, args, 1e12)));
 }
 
 function heapUsed(): number {
@@ -33,42 +38,44 @@ function heapUsed(): number {
   return getHeapStatistics().used_heap_size;
 }
 
-function measure(job: BenchJob): FastFigures {
-  const fast = createSesSandbox([job.vi]);
-  const plain = createPlainSandbox([job.vi]);
-  const viReplanMs: Record<string, number> = {};
-  const viPlainMs: Record<string, number> = {};
-  for (const n of VI_SIZES) {
-    const runs = n >= 150 ? 5 : 9;
-    // Alternate the engines so that neither is favoured by the machine's mood.
-    const f: number[] = [];
-    const p: number[] = [];
-    for (let i = 0; i < 3; i++) {
-      p.push(replanMs(plain, n, runs));
-      f.push(replanMs(fast, n, runs));
-    }
-    viReplanMs[n] = median(f);
-    viPlainMs[n] = median(p);
-  }
-
-  const basic = new Session(job.office, job.basicController, { sandbox: createSesSandbox, generateBody: bodiesFrom(job.basicBodies) });
-  ticksPerSecond(basic, Math.min(0.2, job.seconds)); // warm up
-  const basicTicksPerSecond = ticksPerSecond(basic, job.seconds);
+function rest(j: BenchJob): FastFigures {
+  const basic = new Session(j.office, j.basicController, { sandbox: createSesSandbox, generateBody: bodiesFrom(j.basicBodies) });
+  ticksPerSecond(basic, Math.min(0.3, j.seconds)); // warm up
+  const basicTicksPerSecond = ticksPerSecond(basic, j.seconds);
   basic.dispose();
 
   const before = heapUsed();
-  const vi = new Session(job.viWorld, job.viController, { sandbox: createSesSandbox, generateBody: bodiesFrom(job.viBodies) });
-  vi.run(job.historyTicks);
+  const vi = new Session(j.viWorld, j.viController, { sandbox: createSesSandbox, generateBody: bodiesFrom(j.viBodies) });
+  vi.run(j.historyTicks);
   const historyBytes = heapUsed() - before;
   const index = vi.functions.findIndex((p) => p.fn.name === 'valueIteration');
-  let replans = 0;
-  for (const r of vi.history.slice(1)) if (r.outputs[index] !== vi.history.at(r.tick - 1).outputs[index]) replans++;
+  let replanCount = 0;
+  for (const r of vi.history.slice(1)) if (r.outputs[index] !== vi.history.at(r.tick - 1).outputs[index]) replanCount++;
   const seekMs = worstSeekMs(vi);
   const historyTicks = vi.tick;
   vi.dispose();
-  return { viReplanMs, viPlainMs, basicTicksPerSecond, historyBytes, historyTicks, replans, seekMs };
+  return { basicTicksPerSecond, historyBytes, historyTicks, replans: replanCount, seekMs };
 }
 
-parentPort?.on('message', (job: BenchJob) => {
-  parentPort?.postMessage(measure(job));
+function answer(req: BenchRequest): BenchReply {
+  switch (req.type) {
+    case 'setup':
+      job = req.job;
+      fast = createSesSandbox([req.job.vi]);
+      return { type: 'ready' };
+    case 'replan':
+      return { type: 'replan', ms: replans(req.n, req.runs, req.warmup) };
+    case 'rest':
+      return { type: 'rest', figures: rest(job as BenchJob) };
+  }
+}
+
+parentPort?.on('message', (req: BenchRequest) => {
+  let reply: BenchReply;
+  try {
+    reply = answer(req);
+  } catch (e) {
+    reply = { type: 'failed', message: e instanceof Error ? e.message : String(e) };
+  }
+  parentPort?.postMessage(reply);
 });

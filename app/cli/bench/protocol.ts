@@ -26,11 +26,24 @@ export interface BenchJob {
   readonly seconds: number;
 }
 
-/** What the worker measured, all in one realm (locked down). */
+/** Parent -> worker. */
+export type BenchRequest =
+  /** Set up the fast sandbox of `valueIteration` (and keep the job for `rest`). */
+  | { readonly type: 'setup'; readonly job: BenchJob }
+  /** Time `runs` replans on an n x n grid, after `warmup` untimed ones. */
+  | { readonly type: 'replan'; readonly n: number; readonly runs: number; readonly warmup: number }
+  /** Everything else: ticks per second, history memory, seeks. */
+  | { readonly type: 'rest' };
+
+/** Worker -> parent. */
+export type BenchReply =
+  | { readonly type: 'ready' }
+  | { readonly type: 'replan'; readonly ms: readonly number[] }
+  | { readonly type: 'rest'; readonly figures: FastFigures }
+  | { readonly type: 'failed'; readonly message: string };
+
+/** What the worker measured in its locked-down realm, apart from the replans. */
 export interface FastFigures {
-  /** Median milliseconds of one replan, by grid side, in the fast sandbox and as plain JavaScript. */
-  readonly viReplanMs: Readonly<Record<string, number>>;
-  readonly viPlainMs: Readonly<Record<string, number>>;
   readonly basicTicksPerSecond: number;
   readonly historyBytes: number;
   /** Ticks the history held when measured, and how many replans they contained. */
