@@ -9,15 +9,20 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { ControllerSpec } from '../../app/core/controller/model';
 import { parseController, serializeController } from '../../app/core/formats';
+import { prettyJson } from '../../app/core/formats/pretty';
 import { Session } from '../../app/core/session/session';
 import type { WorldSpec } from '../../app/core/world/world';
 import { generateBody } from '../../blocks/generate';
 import { createPlainSandbox } from '../../app/cli/bench/plain-sandbox';
 import { basicController, basicRandomController, nearestGoalController, valueIterationController } from './examples/controllers';
+import { packWithExample, submissionWithExample } from './examples/packs';
 import { office, trap, trapNew } from './examples/worlds';
 
 const DIR = join(__dirname, '..', '..', 'examples', 'controllers');
 const file = (name: string) => join(DIR, `${name}.controller.json`);
+const PACK = join(__dirname, '..', '..', 'examples', 'packs', 'intro.pack.json');
+const SOLUTION = join(__dirname, '..', '..', 'examples', 'packs', 'intro.solution.submission.json');
+const readJson = (path: string) => JSON.parse(readFileSync(path, 'utf8')) as Record<string, unknown>;
 
 function load(name: string): ControllerSpec {
   const parsed = parseController(readFileSync(file(name), 'utf8'), file(name));
@@ -34,6 +39,9 @@ if (process.env.UPDATE_EXAMPLES === '1') {
     'value-iteration': valueIterationController(basic),
   };
   for (const [name, spec] of Object.entries(built)) writeFileSync(file(name), serializeController(spec));
+  const vi = load('value-iteration');
+  writeFileSync(PACK, prettyJson(packWithExample(readJson(PACK), vi)));
+  writeFileSync(SOLUTION, prettyJson(submissionWithExample(readJson(SOLUTION), vi)));
 }
 
 function run(controller: string, world: WorldSpec, ticks = 2000) {
@@ -63,6 +71,12 @@ describe('example controllers (blocks)', () => {
     const r = run('nearest-goal', office, 400);
     expect(r.crashTick).toBeNull();
     expect(r.goals.slice(0, 2)).toEqual([131, 174]);
+  });
+
+  test('the sample pack\'s value-iteration starters and solutions are the example (starters keep their CELL_SIZE)', () => {
+    const vi = load('value-iteration');
+    expect(readJson(PACK)).toEqual(packWithExample(readJson(PACK), vi));
+    expect(readJson(SOLUTION)).toEqual(submissionWithExample(readJson(SOLUTION), vi));
   });
 
   test('value-iteration: completes the office plan and escapes both traps without crashing', () => {

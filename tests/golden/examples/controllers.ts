@@ -165,7 +165,7 @@ export function valueIterationController(basic: ControllerSpec): ControllerSpec 
     ],
     randomSources: [],
     functions: [
-      fn('grid', 'The grid of CELL_SIZE cells over the walls, goals and the robot, made on the first tick and kept.', 'record', [prev('previousGrid', 'grid', false), world('walls', 'walls'), world('goals', 'goals'), world('robotPos', 'robotPos')], viBodies.grid),
+      fn('grid', 'The grid of CELL_SIZE cells over the walls, goals and the robot, with WALL_MARGIN of room around them, made on the first tick and kept.', 'record', [prev('previousGrid', 'grid', false), world('walls', 'walls'), world('goals', 'goals'), world('robotPos', 'robotPos')], viBodies.grid),
       fn('getHasWall', 'A table of the grid: true in every blocked cell, that is every cell a wall passes through or whose centre is closer than WALL_MARGIN to a wall.', 'list', [world('walls', 'walls'), fnArc('grid', 'grid')], viBodies.getHasWall),
       fn('getHasGoal', 'A table of the grid: true in the cell of the next goal.', 'list', [fnArc('todo', 'todo'), world('goals', 'goals'), fnArc('grid', 'grid')], viBodies.getHasGoal),
       fn('currentState', 'The cell [column, row] the robot is in.', 'point', [world('robotPos', 'robotPos'), fnArc('grid', 'grid')], viBodies.currentState),

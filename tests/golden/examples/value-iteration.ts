@@ -50,7 +50,8 @@ export const viBodies: Record<string, BodyMaker> = {
     return b.body(
       // previousGrid is false on the first tick, then the grid made then.
       [b.if([[b.input('previousGrid'), [b.ret(b.input('previousGrid'))]]])],
-      b.api('makeGrid', b.input('walls'), b.input('goals'), b.input('robotPos'), b.layerVar('CELL_SIZE')),
+      // WALL_MARGIN of room around the walls keeps a way open round the outside of the world.
+      b.api('makeGridWithRoom', b.input('walls'), b.input('goals'), b.input('robotPos'), b.layerVar('CELL_SIZE'), b.layerVar('WALL_MARGIN')),
     );
   },
   getHasWall() {
