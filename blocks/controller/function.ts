@@ -80,7 +80,7 @@ export const functionBlocks: BlockFamily = {
   ],
   extensions: {
     lb_controller_function_open(this: Blockly.Block) {
-      // An "open" button at the end of the first row: the editor opens the function's blocks.
+      // An "open" button at the start of the first row: the editor opens the function's blocks.
       const image = { type: 'field_image', src: OPEN_ICON, width: 16, height: 16, alt: 'open blocks' };
       const field = Blockly.fieldRegistry.fromJson(image) as Blockly.FieldImage | null;
       if (!field) return;
@@ -89,7 +89,7 @@ export const functionBlocks: BlockFamily = {
         if (block && openHandler) openHandler(block);
       });
       field.setTooltip('Open this function\'s blocks');
-      this.inputList[0]?.appendField(field, OPEN_FIELD);
+      this.inputList[0]?.insertFieldAt(0, field, OPEN_FIELD);
     },
     lb_arc_initial_visibility(this: Blockly.Block) {
       // The initial value matters only for previous-tick sources: show it only for them.

@@ -64,13 +64,20 @@ test('double-clicking a function block opens its blocks; the breadcrumb goes bac
   const id = await page.evaluate(() => window.layerbotTest!.editorBlockId('Top', 'todo'));
   expect(id).not.toBeNull();
   const box = (await page.locator(`.lbe-ctrl-ws g[data-id="${id}"] > .blocklyPath`).first().boundingBox())!;
-  // The top left corner of the block holds the word "function" (not an editable field).
-  await page.mouse.dblclick(box.x + 14, box.y + 9);
+  // The first row starts with the "open" button, then the word "function" (not an editable field).
+  await page.mouse.dblclick(box.x + 44, box.y + 9);
   await page.waitForFunction(() => window.layerbotTest!.editor()?.view === 'function');
   expect((await editor()).opened).toEqual({ layer: 'Top', fn: 'todo' });
   expect((await page.locator('.lbe-crumbs').textContent())?.replace(/\s+/g, ' ')).toContain('Controller›Top›todo');
   await page.waitForSelector('.lbe-body-ws .blocklyToolbox, .lbe-body-ws .blocklyToolboxDiv', { state: 'attached' });
   expect((await editor()).toolbox).toContain('Logic');
+  await backToController();
+
+  // The "open" button at the start of a function block opens it with one click.
+  const timer = await page.evaluate(() => window.layerbotTest!.editorBlockId('Top', 'timer'));
+  const tbox = (await page.locator(`.lbe-ctrl-ws g[data-id="${timer}"] > .blocklyPath`).first().boundingBox())!;
+  await page.mouse.click(tbox.x + 14, tbox.y + 9);
+  await page.waitForFunction(() => window.layerbotTest!.editor()?.opened?.fn === 'timer');
   await backToController();
 });
 
@@ -135,6 +142,15 @@ test('a function switches to JavaScript text, runs as written, and back to its b
 });
 
 test('a challenge locks a layer (visible, not editable) and limits the toolbox', async () => {
+  // Unlocked, the text "left" in lowLevelSteer opens an editor when clicked.
+  await openFromJump('Bottom', 'lowLevelSteer');
+  const left = page.locator('.lbe-body-ws g.blocklyField', { hasText: /^left$/ }).first();
+  await left.click();
+  await page.locator('.blocklyHtmlInput').waitFor();
+  await page.locator('.blocklyHtmlInput').press('Enter');
+  await page.locator('.blocklyHtmlInput').waitFor({ state: 'hidden' });
+  await backToController();
+
   await page.evaluate(() => window.layerbotTest!.setRestrictions({ locked: [{ layer: 'Bottom' }], toolbox: ['Logic', 'Math'] }));
   await openFromJump('Bottom', 'lowLevelSteer');
   let s = await editor();
@@ -143,7 +159,7 @@ test('a challenge locks a layer (visible, not editable) and limits the toolbox',
   expect(await page.locator('.lbe-seg-btn[data-mode="text"]').isDisabled()).toBe(true);
   // Clicking a number in the locked body opens no editor, and the controller stays as it was.
   const before = await page.evaluate(() => JSON.stringify(window.layerbotTest!.controller()));
-  await page.locator('.lbe-body-ws .blocklyText', { hasText: /^left$/ }).first().click();
+  await left.click({ force: true });
   await settle(page);
   expect(await page.locator('.blocklyHtmlInput').count()).toBe(0);
   expect(await page.evaluate(() => JSON.stringify(window.layerbotTest!.controller()))).toBe(before);

@@ -281,6 +281,7 @@ export class BlocksPane implements ControllerPane {
     copy.addEventListener('click', () => this.fileInput.click());
     this.jump = el('select', 'lbe-select lbe-jump');
     this.jump.setAttribute('aria-label', 'Open a function');
+    this.jump.title = 'Open a function’s blocks';
     this.jump.addEventListener('change', () => {
       const [layer, fn] = this.jump.value.split('\u0000');
       this.jump.value = '';
@@ -347,7 +348,7 @@ export class BlocksPane implements ControllerPane {
       zoom: { controls: true, wheel: false, pinch: true, startScale: 0.8, maxScale: 2, minScale: 0.3, scaleSpeed: 1.15 },
       grid: { spacing: 24, length: 2, colour: isContrast() ? '#333333' : '#dfe4ec', snap: false },
     };
-    this.ctrlWs = Blockly.inject(this.ctrlDiv, { ...common, toolbox: controllerToolbox(), comments: false, disable: false, collapse: true });
+    this.ctrlWs = Blockly.inject(this.ctrlDiv, { ...common, zoom: { ...common.zoom, startScale: 0.72 }, toolbox: controllerToolbox(), comments: false, disable: false, collapse: true });
     this.bodyWs = Blockly.inject(this.bodyDiv, { ...common, toolbox: makeToolbox(this.toolboxCategories()), comments: true, disable: true, collapse: true });
     editorsByWorkspace.set(this.ctrlWs, this);
     setOpenFunctionHandler((block) => {
@@ -543,7 +544,7 @@ export class BlocksPane implements ControllerPane {
   private renderJump(): void {
     const spec = this.session.spec;
     this.jump.replaceChildren();
-    const first = el('option', '', 'Open a function…');
+    const first = el('option', '', 'Function…');
     first.value = '';
     this.jump.appendChild(first);
     for (const layer of spec?.layers ?? []) {
@@ -883,9 +884,8 @@ export class BlocksPane implements ControllerPane {
     if (has) return;
     const field = new Blockly.FieldImage(src, width, 16, tooltip);
     field.setTooltip(tooltip);
-    const at = input.fieldRow.findIndex((f) => f.name === OPEN_FIELD);
-    if (at >= 0) input.insertFieldAt(at, field, name);
-    else input.appendField(field, name);
+    // Badges go first in the row, after the "open" button.
+    input.insertFieldAt(input.fieldRow.findIndex((f) => f.name === OPEN_FIELD) + 1, field, name);
   }
 
   // ---------- Adding layers ----------
