@@ -201,6 +201,9 @@ export function valueIterationController(basic: ControllerSpec): ControllerSpec 
     description:
       'Four layers after the original design (figure 2.5): the top layer keeps the to-do list, a value-iteration layer plans on a grid, the middle layer steers toward the next cell of the plan, and the bottom layer is the basic controller\'s. It finds its way out of the traps that defeat the basic controller and through the maze, keeping WALL_MARGIN away from walls.',
     bodyCommand: b.bodyCommand,
+    // One valueIteration run on the maze's grid takes about 3.9 million steps in JS-Interpreter:
+    // room for bigger worlds or smaller cells before the run stops (the default is 5 million).
+    stepBudget: 20_000_000,
     layers: [top, vi, { ...middle, functions: [steer, arrived] }, bottom],
   };
 }
