@@ -32,6 +32,26 @@ export class FieldNameDropdown extends Blockly.FieldDropdown {
     });
   }
 
+  /**
+   * The options depend on the workspace, which changes (a block loading later defines the name):
+   * recompute them when the value changes, so the label matches the value.
+   */
+  protected override doValueUpdate_(newValue: string): void {
+    super.doValueUpdate_(newValue);
+    this.getOptions(false);
+    super.doValueUpdate_(newValue);
+  }
+
+  /** Recomputes the options and redraws the label if it changed (a name appeared or went). */
+  refresh(): void {
+    const value = this.getValue();
+    if (value === null) return;
+    const before = this.getText();
+    this.getOptions(false);
+    super.doValueUpdate_(value);
+    if (this.getText() !== before) this.forceRerender();
+  }
+
   /** Any text is accepted: the name is checked when code is generated. */
   protected override doClassValidation_(newValue?: string): string | null {
     return typeof newValue === 'string' ? newValue : null;

@@ -17,6 +17,7 @@ import type { FunctionContext } from '../../../blocks/context';
 import { setFunctionContext } from '../../../blocks/context';
 import { ARC_BLOCK, CONTROLLER_FUNCTION_BLOCK, functionExtra, OPEN_FIELD, setFunctionExtra, setOpenFunctionHandler } from '../../../blocks/controller/function';
 import { LAYER_BLOCK, LAYER_VARIABLE_DEF_BLOCK, RANDOM_SOURCE_BLOCK } from '../../../blocks/controller/layer';
+import { FieldNameDropdown } from '../../../blocks/fields/name-dropdown';
 import { generateBody, loadBody } from '../../../blocks/generate';
 import { registerLayerbotBlocks } from '../../../blocks/index';
 import { makeControllerToolbox, makeToolbox } from '../../../blocks/toolbox';
@@ -689,10 +690,10 @@ export class BlocksPane implements ControllerPane {
   }
 
   /** Reads the controller back from the workspace and hands it to the session. */
-  private sync(): void {
+  private sync(base = this.session.spec): void {
     const ws = this.ctrlWs;
-    const base = this.session.spec;
-    if (!ws || !base) return;
+    const before = this.session.spec;
+    if (!ws || !base || !before) return;
     for (const block of ws.getBlocksByType(CONTROLLER_FUNCTION_BLOCK, false)) this.ensureBody(block);
     let next: ControllerSpec;
     try {
@@ -709,7 +710,7 @@ export class BlocksPane implements ControllerPane {
     }
     const problems = validateController(next);
     this.session.setProblem(problems.length ? problems[0].message + (problems.length > 1 ? ` (and ${problems.length - 1} more)` : '') : null);
-    if (JSON.stringify(next) !== JSON.stringify(base)) this.session.setSpec(next, 'blocks');
+    if (JSON.stringify(next) !== JSON.stringify(before)) this.session.setSpec(next, 'blocks');
     this.decorateAll();
     this.renderBars();
   }
@@ -865,6 +866,11 @@ export class BlocksPane implements ControllerPane {
 
   private decorateAll(): void {
     for (const b of this.ctrlWs?.getBlocksByType(CONTROLLER_FUNCTION_BLOCK, false) ?? []) this.decorate(b);
+    // Arc sources name functions anywhere in the controller: relabel them once all are known.
+    for (const arc of this.ctrlWs?.getBlocksByType(ARC_BLOCK, false) ?? []) {
+      const field = arc.getField('SOURCE');
+      if (field instanceof FieldNameDropdown) field.refresh();
+    }
   }
 
   /** The "JS" badge on text-mode functions. */
@@ -905,7 +911,7 @@ export class BlocksPane implements ControllerPane {
     Blockly.Events.setGroup(true);
     let block: Blockly.BlockSvg | null = null;
     try {
-      block = Blockly.serialization.blocks.append(state, ws) as Blockly.BlockSvg;
+      block = Blockly.serialization.blocks.append(state, ws, { recordUndo: true }) as Blockly.BlockSvg;
       if (last?.nextConnection && block.previousConnection) last.nextConnection.connect(block.previousConnection);
       else block.moveBy(20, 20);
     } finally {
@@ -951,9 +957,9 @@ export class BlocksPane implements ControllerPane {
     if (!layer) return;
     this.flushBody();
     const copy = copyLayerInto(this.session.spec ?? spec, layer);
-    this.session.spec = copy.spec;
     this.appendLayer(layerState(copy.layer));
-    this.sync();
+    // The copy's base knows the new layer's description (it has no block).
+    this.sync(copy.spec);
     const renamed = copy.renamed.length ? ` Renamed to avoid a clash: ${copy.renamed.join(', ')}.` : '';
     const missing = copy.missing.length ? ` It reads functions this controller lacks: ${copy.missing.join(', ')}.` : '';
     this.host.notice(`Added the layer “${copy.layer.name}” from ${file.name}.${renamed}${missing}`, copy.missing.length ? 'error' : 'info');

@@ -27,7 +27,7 @@ export function pageTheme(): Blockly.Theme {
       toolboxForegroundColour: css('--text', '#1c2333'),
       flyoutBackgroundColour: css('--surface-3', '#e9edf3'),
       flyoutForegroundColour: css('--text', '#1c2333'),
-      flyoutOpacity: contrast ? 1 : 0.96,
+      flyoutOpacity: 1,
       scrollbarColour: css('--border-strong', '#c4ccd8'),
       scrollbarOpacity: contrast ? 1 : 0.7,
       insertionMarkerColour: contrast ? '#ffffff' : '#000000',
