@@ -18,6 +18,14 @@ const CSP =
   "default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:; font-src 'self' data:; " +
   "media-src 'self' data: blob:; worker-src 'self' blob:; connect-src 'self' blob: data:; object-src 'none'; base-uri 'none'; form-action 'none'; frame-src 'none'";
 
+/**
+ * The engine Worker's own policy: the fast engine (SES) needs eval inside that Worker only; the
+ * page's policy above still forbids it (a dedicated Worker takes the policy of its own response).
+ * Keep in step with serve.mjs.
+ */
+const ENGINE_WORKER = /^\/assets\/worker-[\w-]+\.js$/;
+const ENGINE_WORKER_CSP = "default-src 'none'; script-src 'self' 'unsafe-eval'; base-uri 'none'";
+
 protocol.registerSchemesAsPrivileged([{ scheme: 'app', privileges: { standard: true, secure: true, supportFetchAPI: true } }]);
 
 const FILTERS: Record<FileKind, Electron.FileFilter[]> = {
@@ -97,7 +105,7 @@ function registerProtocol(): void {
     if (url.host !== 'layerbot' || !file.startsWith(WEB_DIR + sep)) return new Response('Forbidden', { status: 403 });
     const response = await net.fetch(pathToFileURL(file).toString());
     const headers = new Headers(response.headers);
-    headers.set('Content-Security-Policy', CSP);
+    headers.set('Content-Security-Policy', ENGINE_WORKER.test(url.pathname) ? ENGINE_WORKER_CSP : CSP);
     return new Response(response.body, { status: response.status, headers });
   });
 }

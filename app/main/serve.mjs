@@ -32,6 +32,15 @@ const TYPES = {
   '.woff2': 'font/woff2',
 };
 
+/**
+ * The engine Worker's script (Vite names it assets/worker-HASH.js) is served with its own
+ * Content-Security-Policy: the fast engine (SES) needs eval inside that Worker, and a dedicated
+ * Worker takes its policy from its own response, not from the page, whose policy (index.html)
+ * still forbids eval. The Worker may load only this app's scripts and reach nothing.
+ */
+export const ENGINE_WORKER = /^\/assets\/worker-[\w-]+\.js$/;
+export const ENGINE_WORKER_CSP = "default-src 'none'; script-src 'self' 'unsafe-eval'; base-uri 'none'";
+
 /** Builds the web app with Vite (a child process, so this file needs no dependencies). */
 export function buildWeb() {
   const vite = join(ROOT, 'node_modules/vite/bin/vite.js');
@@ -67,6 +76,7 @@ export function serve(dir = WEB_DIR, port = 5173) {
       'Content-Type': TYPES[extname(file)] ?? 'application/octet-stream',
       'Cache-Control': 'no-cache',
       'X-Content-Type-Options': 'nosniff',
+      ...(ENGINE_WORKER.test(path) ? { 'Content-Security-Policy': ENGINE_WORKER_CSP } : {}),
     });
     if (req.method === 'HEAD') res.end();
     else createReadStream(file).pipe(res);

@@ -189,6 +189,29 @@ export class Session {
     return this.summary();
   }
 
+  /**
+   * Records that the next tick stopped with an error found outside the session: the fast engine's
+   * watchdog stopped a call that a guard could not (a slow built-in), in a worker since replaced.
+   * The tick keeps the world as it was (T9) and ends the run.
+   */
+  stopNextTick(error: Omit<ControllerError, 'tick'>): TickRecord {
+    if (this.currentStatus !== 'ready') return this.history.latest;
+    const prev = this.history.latest;
+    const tick = prev.tick + 1;
+    const record: TickRecord = Object.freeze({
+      tick,
+      world: prev.world,
+      outputs: Object.freeze(this.noOutputs.slice()),
+      random: this.streams.length ? Object.freeze(this.streams.map((s) => s.next())) : EMPTY,
+      printed: EMPTY,
+      error: Object.freeze({ ...error, tick }),
+      edits: EMPTY,
+    });
+    this.history.push(record);
+    this.updateStatus(record);
+    return record;
+  }
+
   /** Applies a user's edit to the world at the current tick (a drag while the robot runs). */
   editWorld(edit: WorldEdit): void {
     const latest = this.history.latest;

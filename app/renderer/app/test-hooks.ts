@@ -25,6 +25,8 @@ export interface LayerbotTestHooks {
     worldName: string;
     fps: number;
     ticksPerSecond: number;
+    /** The engine the Worker runs ticks with ('fast' or 'interpreter'; null until it has started). */
+    engine: string | null;
   };
   /** Draws the world view once, now, and returns how long it took in milliseconds. */
   profile(): number;
@@ -67,6 +69,7 @@ export function exposeTestHooks(app: App, ready: Promise<void>): void {
         worldName: app.store.world.name,
         fps: app.view.fps,
         ticksPerSecond: app.engine.state.ticksPerSecond,
+        engine: app.engine.engine,
       };
     },
     profile() {

@@ -16,10 +16,15 @@ import { tableGenerator } from './bodies';
 import { frameOf, WorldRevisions } from './frames';
 import type { EngineCommand, EngineEvent, FunctionInfo, Speed, TickFrame, WireArc, WorldParts } from './protocol';
 
+type RestoreCommand = Extract<EngineCommand, { type: 'restore' }>;
+
 /** Longest stretch of computing before the Worker looks at its messages again (Stop acts at once). */
 const SLICE_MS = 12;
-/** Longest time between two batches sent to the page (about two frames). */
-const BATCH_MS = 30;
+/**
+ * Ticks computed while probing after a restore (see `restore`): more than one slice of the
+ * fastest engine computes, so the tick that got stuck is among them.
+ */
+const PROBE_TICKS = 20_000;
 
 type Post = (event: EngineEvent) => void;
 type Clock = () => number;
@@ -32,7 +37,6 @@ export class EngineHost {
   private generation = 0;
   private revisions = new WorldRevisions();
   private pending: { frames: TickFrame[]; worlds: WorldParts[]; replaced: boolean } = { frames: [], worlds: [], replaced: false };
-  private lastBatch = 0;
   private running = false;
   private speed: Speed = 0;
   private runStart = 0;
@@ -42,13 +46,28 @@ export class EngineHost {
   private ticksPerSecond = 0;
   /** The last value sent for each arc (by index), so unchanged values are not copied again. */
   private sentArcValues: unknown[] = [];
+  /** Until this tick, every call starting is reported to the page (`calling`): see `restore`. */
+  private probeUntil = 0;
+  private readonly sandbox: SandboxFactory;
 
   constructor(
-    private readonly sandbox: SandboxFactory,
+    sandbox: SandboxFactory,
     private readonly post: Post,
     private readonly now: Clock,
     private readonly later: Yield,
-  ) {}
+  ) {
+    this.sandbox = (functions) => {
+      const inner = sandbox(functions);
+      return {
+        call: (index, args, budget) => {
+          const tick = this.session ? this.session.tick + 1 : 0;
+          if (tick <= this.probeUntil) this.post({ type: 'calling', generation: this.generation, tick, index });
+          return inner.call(index, args, budget);
+        },
+        dispose: () => inner.dispose(),
+      };
+    };
+  }
 
   handle(cmd: EngineCommand): void {
     switch (cmd.type) {
@@ -72,7 +91,71 @@ export class EngineHost {
         return this.edit(cmd.edit);
       case 'arcs':
         return this.arcs(cmd.id, cmd.tick);
+      case 'ping':
+        return this.post({ type: 'pong', id: cmd.id });
+      case 'restore':
+        return this.restore(cmd);
     }
+  }
+
+  /**
+   * Rebuilds the page's session in this (new) Worker after the watchdog ended the last one; see
+   * the `restore` command. World revisions are numbered as the first Worker numbered them, since
+   * the same records are met in the same order.
+   */
+  private restore(cmd: RestoreCommand): void {
+    this.stop(null, false);
+    this.session?.dispose();
+    this.session = null;
+    this.bare = null;
+    try {
+      this.session = new Session(cmd.world, cmd.controller, { sandbox: this.sandbox, generateBody: tableGenerator(cmd.bodies), ...(cmd.seed !== undefined ? { seed: cmd.seed } : {}) });
+    } catch (e) {
+      this.post({ type: 'problem', message: e instanceof Error ? e.message : String(e) });
+      this.bare = initialState(cmd.world);
+      this.announce();
+      return;
+    }
+    const s = this.session;
+    this.generation = cmd.generation;
+    this.revisions = new WorldRevisions();
+    this.pending = { frames: [], worlds: [], replaced: false };
+    this.sentArcValues = [];
+    const edits = new Map<number, WorldEdit[]>();
+    for (const { tick, edit } of cmd.edits) edits.set(tick, [...(edits.get(tick) ?? []), edit]);
+    const replayEdits = (tick: number): void => {
+      for (const edit of edits.get(tick) ?? []) {
+        s.editWorld(edit);
+        this.revisions.revisionOf(s.history.latest.world);
+      }
+    };
+    this.revisions.revisionOf(s.history.latest.world);
+    replayEdits(0);
+    let alive = this.now();
+    while (s.tick < cmd.upTo && s.status === 'ready') {
+      const record = s.step();
+      // Ticks the page has are only counted again; later ones (computed by the stuck Worker but
+      // never sent) go to the page as usual.
+      if (record.tick > cmd.known) this.queue(record);
+      else this.revisions.revisionOf(record.world);
+      replayEdits(s.tick);
+      if (this.now() - alive > 100) {
+        alive = this.now();
+        this.post({ type: 'restored', generation: this.generation, tick: s.tick });
+      }
+    }
+    this.post({ type: 'restored', generation: this.generation, tick: s.tick });
+    this.probeUntil = 0;
+    if (s.status === 'ready' && cmd.stopped) this.queue(s.stopNextTick({ ...cmd.stopped, blockId: null }));
+    else if (s.status === 'ready') {
+      // Go on as the stuck Worker did, reporting every call: if it gets stuck again, the page
+      // knows the function. A tick that goes through this time is kept, as any other.
+      this.probeUntil = s.tick + PROBE_TICKS;
+      if (cmd.resume) return this.run(cmd.resume.speed, cmd.resume.maxTicks);
+      return this.stepOnce();
+    }
+    this.flush();
+    this.postStatus(null);
   }
 
   private load(world: WorldSpec, controller: ControllerSpec | null, bodies: BodyTable, seed: number | undefined): void {
@@ -192,7 +275,9 @@ export class EngineHost {
       this.postStatus(note);
       return;
     }
-    if (this.now() - this.lastBatch >= BATCH_MS || this.speed > 0) this.flush();
+    // Every slice's ticks go to the page at once (a slice is ~12 ms, under a frame): when a call
+    // gets stuck, the page holds every tick before the slice it happened in (see client.ts).
+    this.flush();
     const wait = this.speed > 0 ? Math.max(0, this.runStart + ((s.tick + 1 - this.runStartTick) * 1000) / this.speed - this.now()) : 0;
     this.schedule(wait);
   }
@@ -230,7 +315,6 @@ export class EngineHost {
 
   private flush(): void {
     const p = this.pending;
-    this.lastBatch = this.now();
     if (!p.frames.length && !p.worlds.length) return;
     this.pending = { frames: [], worlds: [], replaced: false };
     this.post({ type: 'ticks', generation: this.generation, worlds: p.worlds, frames: p.frames, replacedLatest: p.replaced });

@@ -64,6 +64,23 @@ export interface WireArc {
 /** Ticks per second; 0 means as fast as the engine can go. */
 export type Speed = number;
 
+/** The sandbox engine the Worker runs ticks with: SES compartments, or JS-Interpreter. */
+export type EngineName = 'fast' | 'interpreter';
+
+/** A world edit and the tick it was recorded at (a restore replays them). */
+export interface TimedEdit {
+  readonly tick: number;
+  readonly edit: WorldEdit;
+}
+
+/** An error the page's watchdog found: a call it had to stop by ending the Worker. */
+export interface StoppedCall {
+  readonly function: string | null;
+  readonly layer: string | null;
+  readonly kind: string;
+  readonly message: string;
+}
+
 export type EngineCommand =
   /** Starts a new session (tick 0), with the page-generated block code. A null controller shows the world alone. */
   | { readonly type: 'load'; readonly world: WorldSpec; readonly controller: ControllerSpec | null; readonly bodies: BodyTable; readonly seed?: number }
@@ -76,7 +93,30 @@ export type EngineCommand =
   | { readonly type: 'reset'; readonly world?: WorldSpec }
   /** A drag while the robot runs: recorded at the current tick. */
   | { readonly type: 'editWorld'; readonly edit: WorldEdit }
-  | { readonly type: 'arcs'; readonly id: number; readonly tick: number };
+  | { readonly type: 'arcs'; readonly id: number; readonly tick: number }
+  /** Answered with `pong` between slices: the page's watchdog hears that the Worker is not stuck. */
+  | { readonly type: 'ping'; readonly id: number }
+  /**
+   * A new Worker (the watchdog ended the last one) rebuilds the session the page shows: it loads,
+   * computes ticks 1..upTo again with the edits at their ticks (sending none of them), then either
+   * records `stopped` at tick upTo + 1, or goes on (the run, or one step) while reporting every
+   * call it starts (`calling`), so that a second stop can name the function.
+   */
+  | {
+      readonly type: 'restore';
+      readonly generation: number;
+      readonly world: WorldSpec;
+      readonly controller: ControllerSpec;
+      readonly bodies: BodyTable;
+      readonly seed?: number;
+      readonly upTo: number;
+      /** The page's latest tick: ticks after it are sent as they are computed. */
+      readonly known: number;
+      readonly edits: readonly TimedEdit[];
+      readonly stopped: StoppedCall | null;
+      /** The run to go on with (when the stuck Worker was running), or null (it was stepping). */
+      readonly resume: { readonly speed: Speed; readonly maxTicks: number } | null;
+    };
 
 export type EngineEvent =
   /** A new session at tick 0 (after load or reset): the page drops what it had. */
@@ -111,4 +151,11 @@ export type EngineEvent =
     }
   /** The controller or world could not be loaded; the message says why and where. */
   | { readonly type: 'problem'; readonly message: string }
-  | { readonly type: 'arcs'; readonly id: number; readonly tick: number; readonly arcs: readonly WireArc[] };
+  | { readonly type: 'arcs'; readonly id: number; readonly tick: number; readonly arcs: readonly WireArc[] }
+  /** Sent once when the Worker starts: the engine it runs ticks with, and why not the fast one. */
+  | { readonly type: 'engine'; readonly engine: EngineName; readonly note: string | null }
+  | { readonly type: 'pong'; readonly id: number }
+  /** During a restore's probing tick: function number `index` (session order) starts. */
+  | { readonly type: 'calling'; readonly generation: number; readonly tick: number; readonly index: number }
+  /** A restore rebuilt ticks 0..tick (still alive while it works: sent every ~100 ms as well). */
+  | { readonly type: 'restored'; readonly generation: number; readonly tick: number };

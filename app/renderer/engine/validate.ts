@@ -1,7 +1,7 @@
 /** A light shape check of commands arriving at the Worker (the page is trusted; bugs are not). */
 import type { EngineCommand } from './protocol';
 
-const TYPES = new Set<EngineCommand['type']>(['load', 'step', 'run', 'speed', 'stop', 'reset', 'editWorld', 'arcs']);
+const TYPES = new Set<EngineCommand['type']>(['load', 'step', 'run', 'speed', 'stop', 'reset', 'editWorld', 'arcs', 'ping', 'restore']);
 
 export function isEngineCommand(v: unknown): v is EngineCommand {
   if (typeof v !== 'object' || v === null) return false;
@@ -18,6 +18,13 @@ export function isEngineCommand(v: unknown): v is EngineCommand {
       return typeof c.edit === 'object' && c.edit !== null;
     case 'arcs':
       return typeof c.id === 'number' && typeof c.tick === 'number';
+    case 'ping':
+      return typeof c.id === 'number';
+    case 'restore':
+      return (
+        typeof c.world === 'object' && c.world !== null && typeof c.controller === 'object' && c.controller !== null && typeof c.bodies === 'object' &&
+        c.bodies !== null && typeof c.upTo === 'number' && typeof c.known === 'number' && typeof c.generation === 'number' && Array.isArray(c.edits)
+      );
     default:
       return true;
   }

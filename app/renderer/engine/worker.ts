@@ -2,9 +2,12 @@
  * The engine Worker: runs the Session off the page's thread so the page keeps drawing while the
  * robot runs, and a Stop is read between slices of ticks. Blockly is not loaded here: the page
  * sends the generated code with the controller (see bodies.ts).
+ *
+ * Ticks run in the fast engine (SES) when it can start here, else in JS-Interpreter (engines.ts).
+ * The Worker's name asks for JS-Interpreter when it ends in "-interpreter".
  */
 /// <reference lib="webworker" />
-import { createInterpreterSandbox } from '../../core/sandbox/interpreter';
+import { chooseEngine } from './engines';
 import { EngineHost } from './host';
 import type { EngineCommand, EngineEvent } from './protocol';
 import { isEngineCommand } from './validate';
@@ -23,8 +26,11 @@ const later = (fn: () => void, ms: number): void => {
   }
 };
 
+const engine = chooseEngine(scope.name.endsWith('-interpreter') ? 'interpreter' : 'fast');
+scope.postMessage({ type: 'engine', engine: engine.name, note: engine.note } satisfies EngineEvent);
+
 const host = new EngineHost(
-  createInterpreterSandbox,
+  engine.sandbox,
   (event: EngineEvent) => scope.postMessage(event),
   () => performance.now(),
   later,
