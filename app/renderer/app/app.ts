@@ -20,6 +20,7 @@ import type { ArcRow } from '../engine/client';
 import { EngineClient } from '../engine/client';
 import { Autosave } from '../files/autosave';
 import type { Platform } from '../files/platform';
+import { AboutPanel } from '../panels/about';
 import { ArcTable } from '../panels/arc-table';
 import { byId } from '../panels/dom';
 import { ErrorsPanel } from '../panels/errors';
@@ -58,10 +59,13 @@ export class App {
   private errors!: ErrorsPanel;
   private overlay!: OverlayPicker;
   private summary!: RunSummary;
+  private about!: AboutPanel;
+  private dock!: DockTabs;
   private panes!: PaneArea;
   private draft: WorldEdit | null = null;
   private uiDirty = true;
   private pictureDirty = true;
+  private aboutDirty = true;
   private outputUpTo = 0;
   private arcsInFlight = false;
   private arcsAskedAt = 0;
@@ -122,7 +126,8 @@ export class App {
     this.errors = new ErrorsPanel(byId('error-panel'), byId('error-count'), (e) => this.revealError(e));
     this.overlay = new OverlayPicker(() => this.showArcs(true));
     this.summary = new RunSummary();
-    new DockTabs(byId('dock'));
+    this.dock = new DockTabs(byId('dock'));
+    this.about = new AboutPanel(byId('about-panel'));
     installDebugger(this);
     new ToolsPanel(this.create, this.store);
     new Inspector(this.create, this.store);
@@ -174,6 +179,7 @@ export class App {
     const s = this.store;
     s.onWorld.on(({ reason }) => {
       this.pictureDirty = true;
+      this.aboutDirty = true;
       if (reason === 'document') this.fitPending = true;
       // The engine follows the designed world: Reset and Run start from it.
       if (!this.starting) this.engine.reset(s.world);
@@ -181,6 +187,7 @@ export class App {
       this.invalidate();
     });
     s.onController.on(() => {
+      this.aboutDirty = true;
       if (!this.starting) this.loadEngine();
       this.saveSoon();
     });
@@ -213,6 +220,8 @@ export class App {
       this.store.notice(m.split('\n')[0], 'error');
     });
     this.create.onChange.on(() => this.invalidate());
+    // An example opened from the menu: show what it is for first.
+    this.docs.onExampleOpened.on(() => this.dock.show('about'));
   }
 
   /** Sets what the open challenge locks and offers (null: no challenge, nothing restricted). */
@@ -363,6 +372,10 @@ export class App {
   private frame(): void {
     if (!this.uiDirty) return;
     this.uiDirty = false;
+    if (this.aboutDirty) {
+      this.aboutDirty = false;
+      this.about.show(this.store.world, this.store.controller);
+    }
     const frames = this.engine.frames;
     const latest = frames.length - 1;
     if (this.store.follow && this.store.selectedTick !== latest && latest >= 0) this.store.select(latest, true);

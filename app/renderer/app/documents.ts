@@ -7,6 +7,7 @@ import { detectFormat, formatProblems, parseController, parseWorld, serializeCon
 import type { WorldSpec } from '../../core/world/world';
 import type { ExampleEntry } from '../files/examples';
 import type { Platform } from '../files/platform';
+import { Emitter } from './emitter';
 import type { Store } from './store';
 
 /** The world a new document starts with: an empty room and the robot facing north. */
@@ -59,8 +60,12 @@ export class Documents {
     return true;
   }
 
+  /** An example was opened from the menu (the app shows its description). */
+  readonly onExampleOpened = new Emitter<ExampleEntry>();
+
   async openExample(entry: ExampleEntry): Promise<void> {
     this.openText({ path: '', name: entry.file, text: await entry.load() });
+    this.onExampleOpened.emit(entry);
     const src = entry.file.endsWith('.controller.json') ? this.store.controllerSource : this.store.worldSource;
     // Examples have no path: Save asks where, so the bundled file is never overwritten.
     if (src) Object.assign(src, { path: null });
