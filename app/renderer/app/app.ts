@@ -220,8 +220,10 @@ export class App {
       this.store.notice(m.split('\n')[0], 'error');
     });
     this.create.onChange.on(() => this.invalidate());
-    // An example opened from the menu: show what it is for first.
-    this.docs.onExampleOpened.on(() => this.dock.show('about'));
+    // An example opened from the menu (not the first start's defaults): show what it is for first.
+    this.docs.onExampleOpened.on(() => {
+      if (!this.starting) this.dock.show('about');
+    });
   }
 
   /** Sets what the open challenge locks and offers (null: no challenge, nothing restricted). */
