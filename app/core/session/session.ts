@@ -87,6 +87,8 @@ export class Session {
   private readonly plans: readonly (readonly ArgPlan[])[];
   /** One `undefined` per function, appended (a packed list: see `runFunction`), copied every tick. */
   private readonly noOutputs: unknown[] = [];
+  /** Each function's last successful call: its arguments, its (shared) value and printed lines. */
+  private lastCalls: (LastCall | null)[] = [];
   private readonly bodyIndex: number;
   private readonly budget: number;
   private readonly options: SessionOptions;
@@ -113,6 +115,7 @@ export class Session {
     this.sandbox = options.sandbox(this.compiled);
     this.bodyIndex = this.functions.findIndex((f) => f.fn.name === controller.bodyCommand);
     for (let i = 0; i < this.functions.length; i++) this.noOutputs.push(undefined);
+    this.lastCalls = this.noOutputs.map(() => null);
     this.plans = this.functions.map(({ fn }) => fn.inputs.map((inp) => this.argPlan(inp.from)));
     this.args = this.plans.map((plans) => plans.map((p) => (ctx: TickContext) => gather(p, ctx)));
     this.worldSpec = deepFreeze(world);
@@ -141,6 +144,7 @@ export class Session {
     this.worldSpec = deepFreeze(world);
     this.streams = this.newStreams();
     this.inputsCache = null;
+    this.lastCalls = this.noOutputs.map(() => null);
     this.history = new History(this.firstRecord());
     this.currentStatus = 'ready';
     this.updateStatus(this.history.latest);
@@ -348,6 +352,14 @@ export class Session {
     // several times slower in the fast engine's locked-down realm.
     const args: unknown[] = [];
     for (let j = 0; j < plans.length; j++) args.push(gather(plans[j], ctx));
+    // Functions are pure (T12): called with the very same inputs as on its last call, a function
+    // returns the same value and prints the same lines, so the call is not made again.
+    const last = this.lastCalls[i];
+    if (last !== null && sameArgs(last.args, args)) {
+      for (let k = 0; k < last.output.length; k++) printed.push({ function: fn.name, layer: layer.name, text: last.output[k] });
+      ctx.outputs[i] = last.value;
+      return null;
+    }
     const result = this.sandbox.call(i, args, this.budget);
     if (result.output.length) for (const text of result.output) printed.push({ function: fn.name, layer: layer.name, text });
     if (!result.ok) return this.failure(i, args, result, tick);
@@ -366,7 +378,9 @@ export class Session {
     // A value equal to this function's previous output is stored as that same object, so the
     // history holds each value once while it is unchanged, whatever the function's code does.
     const before = ctx.previous?.[i];
-    ctx.outputs[i] = before !== undefined && before !== result.value && sameValue(before, result.value) ? before : result.value;
+    const value = before !== undefined && before !== result.value && sameValue(before, result.value) ? before : result.value;
+    ctx.outputs[i] = value;
+    this.lastCalls[i] = { args, value, output: result.output };
     return null;
   }
 
@@ -388,6 +402,18 @@ export class Session {
       message: `Error in function "${fn.name}" (layer "${layer.name}"): ${result.message}`,
     };
   }
+}
+
+interface LastCall {
+  readonly args: readonly unknown[];
+  readonly value: unknown;
+  readonly output: readonly string[];
+}
+
+/** True when two argument lists hold the same values: the same objects, equal primitives. */
+function sameArgs(a: readonly unknown[], b: readonly unknown[]): boolean {
+  for (let j = 0; j < a.length; j++) if (!Object.is(a[j], b[j])) return false;
+  return true;
 }
 
 /** The value of one argument at a tick. */
