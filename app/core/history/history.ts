@@ -1,7 +1,8 @@
 /**
  * Every tick of a run, kept so any tick can be shown again. Records are frozen and share every
  * value that did not change, so memory grows with what changes, not with the size of the values.
- * Seeking is an array index.
+ * Seeking is an array index. Nothing is thinned out; what bounds memory is described in
+ * app/core/CONTEXT.md ("What the history keeps").
  */
 import type { TickRecord } from '../session/types';
 
