@@ -45,6 +45,11 @@ test('opens an example world from the File menu', async () => {
   const s = await state(page);
   expect(s.walls).toBe(9);
   expect(s.robot).toEqual({ x: -1, y: 0, heading: 90 });
+  // The About tab comes forward with the example's description.
+  await page.waitForSelector('#about-panel:not([hidden]) .about-name');
+  expect(await page.locator('#about-panel .about-name').first().textContent()).toBe('Robot trap');
+  expect(await page.locator('#about-panel .about-text').first().textContent()).toMatch(/\w+/);
+  await page.click('#dock [data-dock="arcs"]');
 });
 
 test('Step computes one tick and the arc table shows it', async () => {
