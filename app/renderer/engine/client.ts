@@ -4,7 +4,7 @@
  * asking. Arc values are fetched per tick and cached by arc, as the Worker sends only new ones.
  *
  * The watchdog: the page pings the Worker every second; the Worker answers between slices of
- * ticks. A Worker that has not answered for WATCHDOG_MS is stuck in one call that no step budget
+ * ticks. A Worker that has not answered for WATCHDOG_MS (by engine) is stuck in one call that no step budget
  * can stop (a regular expression that backtracks for ever, a huge text) or has died (out of
  * memory). The page then ends it and starts a new one, which rebuilds the session up to the last
  * tick the page has and computes the next tick again, reporting each call it starts. If it gets
@@ -22,8 +22,12 @@ import { generateBodies } from './bodies';
 import type { BodyTable } from './bodies';
 import type { EngineCommand, EngineEvent, EngineName, FunctionInfo, Speed, StoppedCall, TickFrame, TimedEdit, WireArc, WorldParts } from './protocol';
 
-/** How long the Worker may leave a ping unanswered before the page ends it. */
-export const WATCHDOG_MS = 4000;
+/**
+ * How long the Worker may leave a ping unanswered before the page ends it. The fast engine's step
+ * budget ends any loop in well under a second, so only a slow built-in takes longer; JS-Interpreter
+ * is some thousand times slower, and a legitimate tick of a big controller can take many seconds.
+ */
+export const WATCHDOG_MS: Readonly<Record<EngineName, number>> = { fast: 5000, interpreter: 60_000 };
 const PING_MS = 1000;
 
 /** What the Worker was last given to run: enough to rebuild the session in a new Worker. */
@@ -100,9 +104,13 @@ export class EngineClient {
     return worker;
   }
 
+  private limitMs(): number {
+    return WATCHDOG_MS[this.engine ?? (this.workerName.endsWith('-interpreter') ? 'interpreter' : 'fast')];
+  }
+
   /** Pings the Worker, and ends it when it has not answered for too long. */
   private watch(): void {
-    if (this.unanswered !== null && performance.now() - this.unanswered > WATCHDOG_MS) return this.stuck();
+    if (this.unanswered !== null && performance.now() - this.unanswered > this.limitMs()) return this.stuck();
     this.unanswered ??= performance.now();
     this.send({ type: 'ping', id: ++this.pingId });
   }
@@ -123,7 +131,7 @@ export class EngineClient {
       // The probing Worker got as far as the tick before the one it got stuck in.
       upTo = Math.max(known, this.probe.tick - 1);
       const placed = this.probe.index !== null ? this.functions[this.probe.index] : undefined;
-      const seconds = WATCHDOG_MS / 1000;
+      const seconds = this.limitMs() / 1000;
       const what =
         `it ran for more than ${seconds} seconds in one tick and was stopped. ` +
         'The step budget cannot stop a slow built-in operation: look for a regular expression that backtracks a lot, or a huge text or list.';
