@@ -26,6 +26,7 @@ import type { Point } from '../world/geometry';
 import type { WorldSpec, WorldState } from '../world/world';
 import { applyCommand, initialState, planComplete } from '../world/world';
 import type { RandomStream } from './random';
+import { CellInterner } from './intern';
 import { createStreams } from './random';
 import type { ArcView, ControllerError, OutputLine, RunSummary, SessionStatus, TickRecord } from './types';
 
@@ -89,6 +90,7 @@ export class Session {
   private readonly noOutputs: unknown[] = [];
   /** Each function's last successful call: its arguments, its (shared) value and printed lines. */
   private lastCalls: (LastCall | null)[] = [];
+  private readonly cells = new CellInterner();
   private readonly bodyIndex: number;
   private readonly budget: number;
   private readonly options: SessionOptions;
@@ -145,6 +147,7 @@ export class Session {
     this.streams = this.newStreams();
     this.inputsCache = null;
     this.lastCalls = this.noOutputs.map(() => null);
+    this.cells.clear();
     this.history = new History(this.firstRecord());
     this.currentStatus = 'ready';
     this.updateStatus(this.history.latest);
@@ -376,9 +379,10 @@ export class Session {
       };
     }
     // A value equal to this function's previous output is stored as that same object, so the
-    // history holds each value once while it is unchanged, whatever the function's code does.
+    // history holds each value once while it is unchanged, whatever the function's code does;
+    // a new value shares its small lists with earlier outputs (intern.ts).
     const before = ctx.previous?.[i];
-    const value = before !== undefined && before !== result.value && sameValue(before, result.value) ? before : result.value;
+    const value = before !== undefined && before !== result.value && sameValue(before, result.value) ? before : args.includes(result.value) ? result.value : this.cells.intern(result.value);
     ctx.outputs[i] = value;
     this.lastCalls[i] = { args, value, output: result.output };
     return null;
