@@ -81,12 +81,15 @@ export class OverlayLayer {
   private sprite: Sprite | null = null;
   private readonly arrows = new Graphics();
   private key: unknown = null;
+  /** Counts the changes of what the layer shows (the view re-renders its backdrop when it moves). */
+  version = 0;
 
   constructor() {
     this.container.addChild(this.arrows);
   }
 
   clear(): void {
+    if (this.key !== null || this.sprite || this.arrows.context.instructions.length) this.version++;
     this.key = null;
     this.sprite?.destroy({ texture: true, textureSource: true });
     this.sprite = null;
@@ -97,6 +100,7 @@ export class OverlayLayer {
   show(value: unknown, field: GridField, grid: GridSpec, kind: OverlayKind, arrowColor: number): void {
     if (this.key === value && this.kindShown === kind) return;
     this.clear();
+    this.version++;
     this.key = value;
     this.kindShown = kind;
     if (kind === 'heat') this.heat(field, grid);

@@ -2,9 +2,14 @@
  * The world view: PixiJS draws the walls, the goals (the plan's next one highlighted), the robot
  * with its whisker, the trail, grid overlays and the Create tools' marks. The view only draws what
  * it is given; it renders on animation frames and only when something changed.
+ *
+ * What changes only with the camera, the world or the overlay (grid, overlay, walls, goals and
+ * their labels) is the backdrop: rendered once into a texture the size of the canvas, then drawn
+ * each frame as one quad under the trail, the robot and the marks. A frame while the robot runs
+ * costs a handful of draws however many walls the world has.
  */
 import 'pixi.js/unsafe-eval'; // Pixi's shader code without `new Function`: the CSP forbids eval.
-import { Application, Container, Graphics, Text } from 'pixi.js';
+import { Application, Container, Graphics, RenderTexture, Sprite, Text } from 'pixi.js';
 import type { Bounds } from '../../core/world/world';
 import { whiskerSegment } from '../../core/world/world';
 import type { TickFrame } from '../engine/protocol';
@@ -40,6 +45,12 @@ export class WorldView {
   private readonly robot = new Graphics();
   private readonly marks = new Graphics();
   private readonly labels = new Container();
+  /** Grid, overlay, walls, goals and labels, in the camera's frame (rendered into the texture below). */
+  private readonly backdrop = new Container();
+  private readonly backdropScene = new Container();
+  private backdropTexture!: RenderTexture;
+  private backdropDirty = true;
+  private overlayVersion = -1;
   private palette!: Palette;
   private picture: WorldPicture | null = null;
   private editMarks: EditMarks = NO_MARKS;
@@ -74,8 +85,11 @@ export class WorldView {
     this.app.canvas.classList.add('world-canvas');
     this.host.appendChild(this.app.canvas);
     this.trail = new TrailLayer(this.palette);
-    this.scene.addChild(this.overlay.container, this.walls, this.goals, this.trail.container, this.robot, this.marks);
-    this.app.stage.addChild(this.grid, this.scene, this.labels);
+    this.backdropScene.addChild(this.overlay.container, this.walls, this.goals);
+    this.backdrop.addChild(this.grid, this.backdropScene, this.labels);
+    this.backdropTexture = RenderTexture.create({ width: 1, height: 1, resolution: this.app.renderer.resolution, antialias: true });
+    this.scene.addChild(this.trail.container, this.robot, this.marks);
+    this.app.stage.addChild(new Sprite(this.backdropTexture), this.scene);
     new ResizeObserver(() => this.resized()).observe(this.host);
     this.resized();
     const loop = (t: number): void => {
@@ -170,6 +184,7 @@ export class WorldView {
     this.camera.width = Math.max(1, this.host.clientWidth);
     this.camera.height = Math.max(1, this.host.clientHeight);
     this.app.renderer.resize(this.camera.width, this.camera.height);
+    this.backdropTexture?.resize(this.camera.width, this.camera.height, this.app.renderer.resolution);
     this.cameraDirty = true;
     this.invalidate();
   }
@@ -185,13 +200,21 @@ export class WorldView {
     if (!this.dirty) return;
     this.dirty = false;
     const c = this.camera;
-    this.scene.position.set(c.width / 2 - c.cx * c.scale, c.height / 2 + c.cy * c.scale);
-    this.scene.scale.set(c.scale, -c.scale);
+    for (const layer of [this.scene, this.backdropScene]) {
+      layer.position.set(c.width / 2 - c.cx * c.scale, c.height / 2 + c.cy * c.scale);
+      layer.scale.set(c.scale, -c.scale);
+    }
     if (this.cameraDirty) {
       this.cameraDirty = false;
       this.drawGrid();
       this.drawWalls();
       this.drawGoals();
+      this.backdropDirty = true;
+    }
+    if (this.backdropDirty || this.overlayVersion !== this.overlay.version) {
+      this.backdropDirty = false;
+      this.overlayVersion = this.overlay.version;
+      this.app.renderer.render({ container: this.backdrop, target: this.backdropTexture, clear: true, clearColor: this.palette.background });
     }
     if (this.showTrail && this.trailFrames) this.trail.update(this.trailFrames, Math.min(this.trailCount, this.trailFrames.length), this.robotSize());
     this.drawRobot();
