@@ -126,7 +126,8 @@ export class EngineHost {
     const replayEdits = (tick: number): void => {
       for (const edit of edits.get(tick) ?? []) {
         s.editWorld(edit);
-        this.revisions.revisionOf(s.history.latest.world);
+        if (tick > cmd.known) this.queue(s.history.latest, true);
+        else this.revisions.revisionOf(s.history.latest.world);
       }
     };
     this.revisions.revisionOf(s.history.latest.world);
