@@ -10,7 +10,7 @@ import { createSesSandbox, lockdownForSandbox } from '../../core/sandbox/ses';
 import type { Sandbox } from '../../core/sandbox/types';
 import { Session } from '../../core/session/session';
 import { bodiesFrom } from '../fast-worker-support';
-import { ticksPerSecond, timeMs, worstSeekMs } from './measure';
+import { medianTicksPerSecond, ticksPerSecond, timeMs, worstSeekMs } from './measure';
 import type { BenchJob, BenchReply, BenchRequest, FastFigures } from './protocol';
 import { viArguments } from './vi-setup';
 
@@ -41,7 +41,7 @@ function heapUsed(): number {
 function rest(j: BenchJob): FastFigures {
   const basic = new Session(j.office, j.basicController, { sandbox: createSesSandbox, generateBody: bodiesFrom(j.basicBodies) });
   ticksPerSecond(basic, Math.min(0.3, j.seconds)); // warm up
-  const basicTicksPerSecond = ticksPerSecond(basic, j.seconds);
+  const basicTicksPerSecond = medianTicksPerSecond(basic, j.seconds);
   basic.dispose();
 
   const before = heapUsed();

@@ -34,6 +34,14 @@ export function ticksPerSecond(session: Session, seconds: number): number {
   return ticks / (elapsed / 1000);
 }
 
+/**
+ * Ticks per second over `seconds`, as the median of `windows` equal stretches: a burst of other
+ * work on the machine spoils one stretch, not the figure.
+ */
+export function medianTicksPerSecond(session: Session, seconds: number, windows = 5): number {
+  return median(Array.from({ length: windows }, () => ticksPerSecond(session, seconds / windows)));
+}
+
 /** The worst time to seek a tick: read its record and every arc's value, over a spread of ticks. */
 export function worstSeekMs(session: Session, samples = 300): number {
   const last = session.tick;
