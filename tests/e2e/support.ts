@@ -17,6 +17,8 @@ export interface AppState {
   plan: string[];
   worldName: string;
   fps: number;
+  /** The world view's renderer: 'webgl' (with a GPU) or 'canvas'. */
+  renderer: string;
   ticksPerSecond: number;
 }
 
@@ -28,11 +30,11 @@ export async function launch(): Promise<{ browser: Browser; context: BrowserCont
   return { browser, context, page };
 }
 
-/** Opens the app and waits until it has started. */
-export async function openApp(page: Page): Promise<void> {
+/** Opens the app and waits until it has started; `query` is added to the address (e.g. `?renderer=webgl`). */
+export async function openApp(page: Page, query = ''): Promise<void> {
   const url = process.env.LAYERBOT_URL;
   if (!url) throw new Error('LAYERBOT_URL is not set: the browser tests must run through their global setup.');
-  await page.goto(url);
+  await page.goto(url + query);
   await page.waitForFunction(() => window.layerbotTest !== undefined);
   await page.evaluate(() => window.layerbotTest!.ready);
   await page.waitForFunction(() => window.layerbotTest!.state().latestTick >= 0);

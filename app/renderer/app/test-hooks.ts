@@ -24,6 +24,8 @@ export interface LayerbotTestHooks {
     plan: string[];
     worldName: string;
     fps: number;
+    /** The world view's renderer: 'webgl' (with a GPU) or 'canvas'. */
+    renderer: string;
     ticksPerSecond: number;
     /** The engine the Worker runs ticks with ('fast' or 'interpreter'; null until it has started). */
     engine: string | null;
@@ -68,6 +70,7 @@ export function exposeTestHooks(app: App, ready: Promise<void>): void {
         plan: [...app.store.world.plan],
         worldName: app.store.world.name,
         fps: app.view.fps,
+        renderer: app.view.rendererName,
         ticksPerSecond: app.engine.state.ticksPerSecond,
         engine: app.engine.engine,
       };

@@ -1,14 +1,16 @@
 /**
  * The robot's trail as in the textbook's plots: a green dot per tick, red where the whisker
  * touched, a star where it crashed. Dots are particles (one textured quad each, not a tessellated
- * circle), held in chunks: a finished chunk is never touched again, so a long run costs one small
- * upload per frame, and drawing ten thousand dots stays cheap even without a GPU.
+ * circle), held in chunks. Full chunks live in `finished`, which the view bakes into its backdrop
+ * texture (redrawn only when a chunk fills up or the trail is cut back); the chunk being filled and
+ * the crash star live in `live`, drawn every frame. A frame costs the same however long the run.
+ * The canvas renderer draws chunks as Graphics (its particles do not render into textures).
  */
 import { Container, Graphics, Particle, ParticleContainer, Texture } from 'pixi.js';
 import type { TickFrame } from '../engine/protocol';
 import type { Palette } from './palette';
 
-const CHUNK = 512;
+const CHUNK = 256;
 /** The dot's radius in world units. */
 const DOT = 0.38;
 /** The dot texture's size in pixels: large enough to stay round when zoomed in. */
@@ -30,14 +32,82 @@ function dot(): Texture {
   return dotTexture;
 }
 
+/** A run of at most CHUNK dots. */
+interface Chunk {
+  readonly view: Container;
+  /** Adds the dots of frames[start .. end-1] (the chunk's dots so far run up to start). */
+  add(frames: readonly TickFrame[], start: number, end: number, palette: Palette): void;
+  /** Keeps the first `n` dots. */
+  cut(n: number, palette: Palette): void;
+}
+
+/** Dots as particles: one textured quad each (WebGL). */
+class ParticleChunk implements Chunk {
+  readonly view = new ParticleContainer({ texture: dot(), dynamicProperties: { position: false, vertex: false, rotation: false, uvs: false, color: false } });
+
+  add(frames: readonly TickFrame[], start: number, end: number, palette: Palette): void {
+    const scale = (DOT * 2) / TEXTURE_SIZE;
+    const texture = dot();
+    for (let i = start; i < end; i++) {
+      const f = frames[i];
+      this.view.addParticle(new Particle({ texture, x: f.x, y: f.y, scaleX: scale, scaleY: scale, anchorX: 0.5, anchorY: 0.5, tint: f.whisker ? palette.trailTouch : palette.trail }));
+    }
+    this.view.update();
+  }
+
+  cut(n: number): void {
+    this.view.removeParticles(n);
+    this.view.update();
+  }
+}
+
+/** Dots as circles in one Graphics, redrawn whole when dots are added (canvas). */
+class GraphicsChunk implements Chunk {
+  readonly view = new Graphics();
+  private frames: readonly TickFrame[] = [];
+  private first = -1;
+  private end = 0;
+
+  add(frames: readonly TickFrame[], start: number, end: number, palette: Palette): void {
+    if (this.first < 0) this.first = start;
+    this.frames = frames;
+    this.end = end;
+    this.draw(palette);
+  }
+
+  cut(n: number, palette: Palette): void {
+    this.end = this.first + n;
+    this.draw(palette);
+  }
+
+  private draw(palette: Palette): void {
+    const g = this.view.clear();
+    // Two passes, one fill each: far fewer draw batches than alternating colours.
+    for (let i = this.first; i < this.end; i++) if (!this.frames[i].whisker) g.circle(this.frames[i].x, this.frames[i].y, DOT);
+    g.fill({ color: palette.trail });
+    for (let i = this.first; i < this.end; i++) if (this.frames[i].whisker) g.circle(this.frames[i].x, this.frames[i].y, DOT);
+    g.fill({ color: palette.trailTouch });
+  }
+}
+
 export class TrailLayer {
-  readonly container = new Container();
-  private chunks: ParticleContainer[] = [];
+  /** Full chunks: drawn into the view's backdrop. */
+  readonly finished = new Container();
+  /** The chunk being filled and the crash star: drawn every frame. */
+  readonly live = new Container();
+  private chunks: Chunk[] = [];
   private drawnUpTo = 0;
   private readonly crashMark = new Graphics();
+  /** Set when `finished` lost chunks (or changed colours): the view re-renders its whole backdrop. */
+  finishedChanged = false;
+  /** Chunks that filled up since the view last looked: it draws just these onto its backdrop. */
+  readonly newlyFinished: Container[] = [];
 
-  constructor(private palette: Palette) {
-    this.container.addChild(this.crashMark);
+  constructor(
+    private palette: Palette,
+    private readonly particles: boolean,
+  ) {
+    this.live.addChild(this.crashMark);
   }
 
   setPalette(p: Palette): void {
@@ -46,8 +116,10 @@ export class TrailLayer {
   }
 
   clear(): void {
-    for (const c of this.chunks) c.destroy();
+    if (this.finished.children.length > 0) this.finishedChanged = true;
+    for (const c of this.chunks) c.view.destroy();
     this.chunks = [];
+    this.newlyFinished.length = 0;
     this.drawnUpTo = 0;
     this.crashMark.clear();
   }
@@ -74,32 +146,31 @@ export class TrailLayer {
     }
   }
 
-  /** Drops the dots from `count` on. */
+  /** Drops the dots from `count` on: the chunk holding the last dot kept becomes the live one. */
   private truncate(count: number): void {
     const keep = Math.floor((count - 1) / CHUNK);
-    for (const c of this.chunks.splice(keep + 1)) c.destroy();
+    for (const c of this.chunks.splice(keep + 1)) c.view.destroy();
     const last = this.chunks[keep];
     if (last) {
-      last.removeParticles(count - keep * CHUNK);
-      last.update();
+      last.cut(count - keep * CHUNK, this.palette);
+      if (last.view.parent !== this.live) this.live.addChildAt(last.view, 0);
     }
+    this.newlyFinished.length = 0;
+    this.finishedChanged = true;
     this.drawnUpTo = count;
   }
 
   private addDots(c: number, frames: readonly TickFrame[], start: number, end: number): void {
     let chunk = this.chunks[c];
     if (!chunk) {
-      chunk = new ParticleContainer({ texture: dot(), dynamicProperties: { position: false, vertex: false, rotation: false, uvs: false, color: false } });
+      chunk = this.particles ? new ParticleChunk() : new GraphicsChunk();
       this.chunks[c] = chunk;
-      // Below the crash star.
-      this.container.addChildAt(chunk, this.container.children.length - 1);
+      this.live.addChildAt(chunk.view, 0); // Below the crash star.
     }
-    const scale = (DOT * 2) / TEXTURE_SIZE;
-    const texture = dot();
-    for (let i = start; i < end; i++) {
-      const f = frames[i];
-      chunk.addParticle(new Particle({ texture, x: f.x, y: f.y, scaleX: scale, scaleY: scale, anchorX: 0.5, anchorY: 0.5, tint: f.whisker ? this.palette.trailTouch : this.palette.trail }));
+    chunk.add(frames, start, end, this.palette);
+    if (end === (c + 1) * CHUNK) {
+      this.finished.addChild(chunk.view);
+      this.newlyFinished.push(chunk.view);
     }
-    chunk.update();
   }
 }

@@ -3,13 +3,16 @@
  * with its whisker, the trail, grid overlays and the Create tools' marks. The view only draws what
  * it is given; it renders on animation frames and only when something changed.
  *
- * What changes only with the camera, the world or the overlay (grid, overlay, walls, goals and
- * their labels) is the backdrop: rendered once into a texture the size of the canvas, then drawn
- * each frame as one quad under the trail, the robot and the marks. A frame while the robot runs
- * costs a handful of draws however many walls the world has.
+ * What changes only with the camera, the walls or the overlay (grid, overlay, walls and the
+ * trail's full chunks) is the backdrop: rendered once into a texture the size of the canvas, then
+ * drawn each frame as one quad under the newest dots, the goals, the robot and the marks. A frame
+ * while the robot runs costs a handful of draws however many walls and ticks there are.
+ *
+ * Where WebGL runs in software (no GPU, as on many school lab machines and in headless browsers),
+ * Pixi's canvas renderer draws this scene several times faster, so the view uses it there.
  */
 import 'pixi.js/unsafe-eval'; // Pixi's shader code without `new Function`: the CSP forbids eval.
-import { Application, Container, Graphics, RenderTexture, Sprite, Text } from 'pixi.js';
+import { Application, Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
 import type { Bounds } from '../../core/world/world';
 import { whiskerSegment } from '../../core/world/world';
 import type { TickFrame } from '../engine/protocol';
@@ -29,6 +32,27 @@ export interface EditMarks {
   /** A wall or heading line being drawn. */
   readonly preview: readonly [number, number, number, number] | null;
   readonly handles: readonly (readonly [number, number])[];
+}
+
+/** WebGL with a GPU, else canvas; the page address can ask for one (`?renderer=webgl`). */
+function rendererPreference(): 'webgl' | 'canvas' {
+  const asked = new URLSearchParams(location.search).get('renderer');
+  if (asked === 'webgl' || asked === 'canvas') return asked;
+  return softwareWebGL() ? 'canvas' : 'webgl';
+}
+
+/** True when WebGL would run on the CPU (SwiftShader, llvmpipe): no GPU to draw with. */
+function softwareWebGL(): boolean {
+  try {
+    const gl = document.createElement('canvas').getContext('webgl');
+    if (!gl) return true;
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    const name = info ? String(gl.getParameter(info.UNMASKED_RENDERER_WEBGL)) : '';
+    gl.getExtension('WEBGL_lose_context')?.loseContext();
+    return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+  } catch {
+    return false;
+  }
 }
 
 const NO_MARKS: EditMarks = { selectedWall: null, selectedGoal: null, robotSelected: false, preview: null, handles: [] };
@@ -56,12 +80,15 @@ export class WorldView {
   private editMarks: EditMarks = NO_MARKS;
   private dirty = true;
   private cameraDirty = true;
+  private goalsDirty = true;
   private showTrail = true;
   private labelTexts = new Map<string, Text>();
   /** Called once per animation frame before drawing: the app applies queued updates here. */
   beforeFrame: (() => void) | null = null;
   /** Animation frames per second, measured over the last second (for the status line and tests). */
   fps = 0;
+  /** The renderer drawing the view: 'webgl' or 'canvas'. */
+  rendererName = '';
   private frameCount = 0;
   private fpsSince = 0;
 
@@ -71,7 +98,7 @@ export class WorldView {
     this.palette = readPalette(this.host);
     await this.app.init({
       resizeTo: this.host,
-      preference: 'webgl',
+      preference: rendererPreference(),
       antialias: true,
       autoDensity: true,
       resolution: Math.min(2, window.devicePixelRatio || 1),
@@ -81,15 +108,16 @@ export class WorldView {
       preserveDrawingBuffer: true,
     });
     this.app.ticker.stop();
+    this.rendererName = this.app.renderer.name;
     this.app.canvas.setAttribute('aria-label', 'World view');
     this.app.canvas.classList.add('world-canvas');
     this.host.appendChild(this.app.canvas);
-    this.trail = new TrailLayer(this.palette);
-    this.backdropScene.addChild(this.overlay.container, this.walls, this.goals);
-    this.backdrop.addChild(this.grid, this.backdropScene, this.labels);
+    this.trail = new TrailLayer(this.palette, this.rendererName === 'webgl');
+    this.backdropScene.addChild(this.overlay.container, this.walls, this.trail.finished);
+    this.backdrop.addChild(this.grid, this.backdropScene);
     this.backdropTexture = RenderTexture.create({ width: 1, height: 1, resolution: this.app.renderer.resolution, antialias: true });
-    this.scene.addChild(this.trail.container, this.robot, this.marks);
-    this.app.stage.addChild(new Sprite(this.backdropTexture), this.scene);
+    this.scene.addChild(this.trail.live, this.goals, this.robot, this.marks);
+    this.app.stage.addChild(new Sprite(this.backdropTexture), this.scene, this.labels);
     new ResizeObserver(() => this.resized()).observe(this.host);
     this.resized();
     const loop = (t: number): void => {
@@ -123,9 +151,10 @@ export class WorldView {
     if (p === this.picture) return;
     const q = this.picture;
     // Frames arrive as copies, so `reached` is compared by content: goals redraw only when progress changes.
-    const staticChanged = !q || p.walls !== q.walls || p.goals !== q.goals || p.plan !== q.plan || p.goalRadius !== q.goalRadius || p.reached.join() !== q.reached.join();
+    const goalsChanged = !q || p.goals !== q.goals || p.plan !== q.plan || p.goalRadius !== q.goalRadius || p.reached.join() !== q.reached.join();
     this.picture = p;
-    if (staticChanged) this.cameraDirty = true;
+    if (!q || p.walls !== q.walls) this.cameraDirty = true;
+    if (goalsChanged) this.goalsDirty = true;
     this.invalidate();
   }
 
@@ -142,7 +171,9 @@ export class WorldView {
 
   setTrailVisible(visible: boolean): void {
     this.showTrail = visible;
-    this.trail.container.visible = visible;
+    this.trail.finished.visible = visible;
+    this.trail.live.visible = visible;
+    this.backdropDirty = true;
     this.invalidate();
   }
 
@@ -208,15 +239,26 @@ export class WorldView {
       this.cameraDirty = false;
       this.drawGrid();
       this.drawWalls();
-      this.drawGoals();
       this.backdropDirty = true;
+      this.goalsDirty = true;
     }
-    if (this.backdropDirty || this.overlayVersion !== this.overlay.version) {
-      this.backdropDirty = false;
-      this.overlayVersion = this.overlay.version;
-      this.app.renderer.render({ container: this.backdrop, target: this.backdropTexture, clear: true, clearColor: this.palette.background });
+    if (this.goalsDirty) {
+      this.goalsDirty = false;
+      this.drawGoals();
     }
     if (this.showTrail && this.trailFrames) this.trail.update(this.trailFrames, Math.min(this.trailCount, this.trailFrames.length), this.robotSize());
+    if (this.backdropDirty || this.trail.finishedChanged || this.overlayVersion !== this.overlay.version) {
+      this.backdropDirty = false;
+      this.trail.finishedChanged = false;
+      this.trail.newlyFinished.length = 0;
+      this.overlayVersion = this.overlay.version;
+      this.app.renderer.render({ container: this.backdrop, target: this.backdropTexture, clear: true, clearColor: this.palette.background });
+    } else if (this.trail.newlyFinished.length) {
+      // A chunk of the trail filled up: draw just it onto the backdrop, in the camera's frame.
+      const m = new Matrix().scale(c.scale, -c.scale).translate(this.backdropScene.position.x, this.backdropScene.position.y);
+      for (const chunk of this.trail.newlyFinished) this.app.renderer.render({ container: chunk, target: this.backdropTexture, clear: false, transform: m });
+      this.trail.newlyFinished.length = 0;
+    }
     this.drawRobot();
     this.drawMarks();
     this.app.render();
