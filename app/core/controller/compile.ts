@@ -54,16 +54,19 @@ export function bodyOf(fn: FunctionSpec, layer: LayerSpec, generate: BodyGenerat
   }
 }
 
+/** One function compiled, with its debug variant when it has one (throws a BodyError). */
+export function compileFunction(fn: FunctionSpec, layer: LayerSpec, generate: BodyGenerator | null): CompiledFunction {
+  const body = bodyOf(fn, layer, generate);
+  return {
+    name: fn.name,
+    layer: layer.name,
+    params: fn.inputs.map((i) => i.name),
+    source: functionSource(fn, layer, body.code),
+    ...(body.debugCode !== undefined ? { debugSource: functionSource(fn, layer, body.debugCode) } : {}),
+  };
+}
+
 /** Every function of the controller, compiled, in the controller's function order. */
 export function compileController(spec: ControllerSpec, generate: BodyGenerator | null): CompiledFunction[] {
-  return allFunctions(spec).map(({ fn, layer }) => {
-    const body = bodyOf(fn, layer, generate);
-    return {
-      name: fn.name,
-      layer: layer.name,
-      params: fn.inputs.map((i) => i.name),
-      source: functionSource(fn, layer, body.code),
-      ...(body.debugCode !== undefined ? { debugSource: functionSource(fn, layer, body.debugCode) } : {}),
-    };
-  });
+  return allFunctions(spec).map(({ fn, layer }) => compileFunction(fn, layer, generate));
 }

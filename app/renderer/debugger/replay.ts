@@ -9,7 +9,7 @@
  * its source's output at t-1 (its initial value at tick 1), and world inputs are read from the
  * world after tick t-1, edits included (SPEC T2, T4, T11).
  */
-import { bodyOf, functionSource } from '../../core/controller/compile';
+import { compileFunction } from '../../core/controller/compile';
 import type { ControllerSpec, FunctionSpec, LayerSpec } from '../../core/controller/model';
 import { DEFAULT_STEP_BUDGET } from '../../core/controller/model';
 import type { StepperOptions } from '../../core/sandbox/stepper';
@@ -40,14 +40,7 @@ export function findFunction(spec: ControllerSpec, layer: string, name: string):
 
 /** The function compiled with its debug variant (throws a BodyError with a readable message). */
 export function compileOne(fn: FunctionSpec, layer: LayerSpec): CompiledFunction {
-  const body = bodyOf(fn, layer, generateBody);
-  return {
-    name: fn.name,
-    layer: layer.name,
-    params: fn.inputs.map((i) => i.name),
-    source: functionSource(fn, layer, body.code),
-    ...(body.debugCode !== undefined ? { debugSource: functionSource(fn, layer, body.debugCode) } : {}),
-  };
+  return compileFunction(fn, layer, generateBody);
 }
 
 /** The inputs `fn` received at a tick, in its parameter order, from that tick's arc rows. */

@@ -24,6 +24,7 @@ import { makeControllerToolbox, makeToolbox } from '../../../blocks/toolbox';
 import { COLOURS } from '../../../blocks/types';
 import { controllerToWorkspace, layerState, workspaceToController } from '../../../blocks/workspace';
 import { el } from '../panels/dom';
+import { functionOptionGroups } from './pickers';
 import type { ControllerPane, PaneHost, StepPoint } from '../panes/types';
 import { alertDialog, chooseDialog, confirmDialog, promptDialog } from './dialog';
 import { icon, LOCK_BADGE, TEXT_BADGE } from './icons';
@@ -547,17 +548,7 @@ export class BlocksPane implements ControllerPane {
     this.jump.replaceChildren();
     const first = el('option', '', 'Function…');
     first.value = '';
-    this.jump.appendChild(first);
-    for (const layer of spec?.layers ?? []) {
-      const group = el('optgroup');
-      group.label = layer.name;
-      for (const fn of layer.functions) {
-        const o = el('option', '', fn.name);
-        o.value = `${layer.name}\u0000${fn.name}`;
-        group.appendChild(o);
-      }
-      this.jump.appendChild(group);
-    }
+    this.jump.append(first, ...functionOptionGroups(spec));
     this.jump.value = '';
     this.jump.disabled = !spec;
   }

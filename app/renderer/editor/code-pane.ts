@@ -5,6 +5,7 @@
  */
 import { generateBody } from '../../../blocks/generate';
 import { el } from '../panels/dom';
+import { functionOptionGroups, functionValue } from './pickers';
 import type { ControllerPane, PaneHost } from '../panes/types';
 import { tokenize } from './highlight';
 import type { FunctionRef } from './model';
@@ -88,19 +89,9 @@ export class CodePane implements ControllerPane {
     this.dirty = false;
     const spec = this.session.spec;
     const ref = this.current();
-    this.picker.replaceChildren();
-    for (const layer of spec?.layers ?? []) {
-      const group = el('optgroup');
-      group.label = layer.name;
-      for (const fn of layer.functions) {
-        const o = el('option', '', fn.name);
-        o.value = `${layer.name}\u0000${fn.name}`;
-        group.appendChild(o);
-      }
-      this.picker.appendChild(group);
-    }
+    this.picker.replaceChildren(...functionOptionGroups(spec));
     this.picker.disabled = !spec;
-    if (ref) this.picker.value = `${ref.layer}\u0000${ref.fn}`;
+    if (ref) this.picker.value = functionValue(ref);
 
     const found = findFunction(spec, ref);
     if (!found) {
