@@ -46,13 +46,14 @@ export function judge(challenge: Challenge, controller: ControllerSpec, runs: re
 
 /**
  * A verdict in one line, for tables: the failed reasons' details, or for a pass the facts of the
- * run in the challenge world. A detail (or a part of one, between semicolons) repeated by two
- * criteria is said once.
+ * run in the challenge world. A detail (or, in the challenge world, a part of one between
+ * semicolons) repeated by two criteria is said once.
  */
 export function verdictSummary(v: Verdict): string {
   const facts = v.reasons.filter((r) => r.world === undefined && r.criterion !== 'locked parts unchanged');
   const shown = v.passed ? facts : v.reasons.filter((r) => !r.passed);
-  const texts = shown.flatMap((r) => r.detail.split('; ').map((part) => (r.world !== undefined ? `on ${r.world}: ${part}` : part)));
+  // Details about a variant world stay whole behind their "on ..." prefix; the others split into parts.
+  const texts = shown.flatMap((r) => (r.world !== undefined ? [`on ${r.world}: ${r.detail}`] : r.detail.split('; ')));
   return [...new Set(texts)].join('; ');
 }
 

@@ -127,3 +127,16 @@ describe('controllers that cannot run', () => {
     expect(lines([{ kind: 'noCrash' }], controller({ speed: 'return (;' }))[1]).toMatch(/^FAIL the controller runs: Error in function "speed" \(layer "Top"\)/);
   });
 });
+
+describe('verdictSummary', () => {
+  test('says a part of a detail that two criteria share once, and keeps variant details whole', () => {
+    const missed = 'storage and o103 not reached (not within 600 ticks)';
+    const reasons: Reason[] = [
+      { criterion: 'reach o109, storage, o103 in plan order', passed: false, detail: `reached o109 at tick 127; ${missed}` },
+      { criterion: 'within 600 ticks', passed: false, detail: missed },
+      { criterion: 'no crash', passed: true, detail: 'no crash in 600 ticks' },
+      { criterion: 'no crash', world: 'variant 1', passed: false, detail: 'crashed at tick 9; the run stopped' },
+    ];
+    expect(verdictSummary({ passed: false, reasons })).toBe(`reached o109 at tick 127; ${missed}; on variant 1: crashed at tick 9; the run stopped`);
+  });
+});
