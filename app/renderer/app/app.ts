@@ -44,6 +44,8 @@ import { Toolbar } from './toolbar';
 
 /** Ticks one press of Run computes at most before pausing (keeps a wandering robot's history bounded). */
 const RUN_LIMIT = 50_000;
+/** Ticks one run may hold at most (a few tens of MB of history): memory stays bounded however often Run is pressed. */
+const MAX_RUN_TICKS = 200_000;
 
 export class App {
   readonly store: Store;
@@ -272,19 +274,28 @@ export class App {
   /** Run or Stop. */
   toggleRun(): void {
     if (this.engine.state.running) return this.engine.stop();
-    this.store.setMode('solve');
-    if (!this.engine.state.hasController) return this.store.notice('Open a controller first (File › Example controllers).', 'error');
-    if (this.engine.state.status !== 'ready') return this.store.notice('The run has ended. Press Reset (R) to start again.');
-    this.store.select(this.engine.frames.length - 1, true);
-    this.engine.run(this.toolbar.speed(), RUN_LIMIT);
+    const left = this.ticksLeft();
+    if (left > 0) this.engine.run(this.toolbar.speed(), Math.min(RUN_LIMIT, left));
   }
 
   step(): void {
+    if (this.ticksLeft() > 0) this.engine.step();
+  }
+
+  /** How many more ticks the run may take (0 after saying why it cannot go on); shows the newest tick. */
+  private ticksLeft(): number {
     this.store.setMode('solve');
-    if (!this.engine.state.hasController) return this.store.notice('Open a controller first (File › Example controllers).', 'error');
-    if (this.engine.state.status !== 'ready') return this.store.notice('The run has ended. Press Reset (R) to start again.');
-    this.store.select(this.engine.frames.length - 1, true);
-    this.engine.step();
+    if (!this.engine.state.hasController) return this.refuse('Open a controller first (File › Example controllers).', 'error');
+    if (this.engine.state.status !== 'ready') return this.refuse('The run has ended. Press Reset (R) to start again.');
+    const latest = this.engine.frames.length - 1;
+    if (latest >= MAX_RUN_TICKS) return this.refuse(`This run holds ${MAX_RUN_TICKS.toLocaleString('en')} ticks, the most one run keeps. Press Reset (R) to start again.`);
+    this.store.select(latest, true);
+    return MAX_RUN_TICKS - latest;
+  }
+
+  private refuse(text: string, kind?: 'info' | 'error'): 0 {
+    this.store.notice(text, kind);
+    return 0;
   }
 
   reset(): void {
