@@ -1,6 +1,6 @@
 /** Create mode in the built app: draw a wall, place and name a goal, undo, and find the work after a reload. */
 import type { Browser, Page } from 'playwright-core';
-import { COLORS, launch, near, openApp, pixelAt, state, toPage } from './support';
+import { COLORS, launchApp, near, openApp, pixelAt, state, toPage } from './support';
 
 jest.setTimeout(60_000);
 
@@ -8,14 +8,11 @@ let browser: Browser;
 let page: Page;
 
 beforeAll(async () => {
-  ({ browser, page } = await launch());
-  await openApp(page);
+  ({ browser, page } = await launchApp());
   await page.click('#mode-switch [data-mode="create"]');
 });
 
-afterAll(async () => {
-  await browser?.close();
-});
+afterAll(() => browser?.close());
 
 async function drag(from: [number, number], to: [number, number]): Promise<void> {
   const a = await toPage(page, ...from);

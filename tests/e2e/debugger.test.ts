@@ -3,23 +3,19 @@
  * variables, and get the value the run recorded.
  */
 import type { Browser, Page } from 'playwright-core';
-import { launch, openApp } from './support';
+import { launchApp } from './support';
 
 jest.setTimeout(60_000);
 
 let browser: Browser;
 let page: Page;
-const pageErrors: string[] = [];
+let pageErrors: string[];
 
 beforeAll(async () => {
-  ({ browser, page } = await launch());
-  page.on('pageerror', (e) => pageErrors.push(e.message));
-  await openApp(page);
+  ({ browser, page, pageErrors } = await launchApp());
 });
 
-afterAll(async () => {
-  await browser?.close();
-});
+afterAll(() => browser?.close());
 
 const panel = '#debugger-panel';
 const block = () => page.locator(panel).getAttribute('data-block');

@@ -1,22 +1,18 @@
 /** The Diagram pane in the built app: bands and ovals, arc values at the selected tick, scrubbing, another example. */
 import type { Browser, Page } from 'playwright-core';
-import { launch, openApp, state } from './support';
+import { launchApp, state } from './support';
 
 jest.setTimeout(60_000);
 
 let browser: Browser;
 let page: Page;
-const pageErrors: string[] = [];
+let pageErrors: string[];
 
 beforeAll(async () => {
-  ({ browser, page } = await launch());
-  page.on('pageerror', (e) => pageErrors.push(e.message));
-  await openApp(page);
+  ({ browser, page, pageErrors } = await launchApp());
 });
 
-afterAll(async () => {
-  await browser?.close();
-});
+afterAll(() => browser?.close());
 
 const BASIC: Record<string, string[]> = {
   Top: ['todo', 'todoChanged', 'timer'],

@@ -4,13 +4,13 @@
  * challenge's locks and toolbox.
  */
 import type { Browser, Page } from 'playwright-core';
-import { launch, openApp, settle, state } from './support';
+import { launchApp, settle, state } from './support';
 
 jest.setTimeout(90_000);
 
 let browser: Browser;
 let page: Page;
-const pageErrors: string[] = [];
+let pageErrors: string[];
 
 type EditorState = NonNullable<ReturnType<NonNullable<Window['layerbotTest']>['editor']>>;
 
@@ -38,14 +38,10 @@ async function backToController(): Promise<void> {
 }
 
 beforeAll(async () => {
-  ({ browser, page } = await launch());
-  page.on('pageerror', (e) => pageErrors.push(e.message));
-  await openApp(page);
+  ({ browser, page, pageErrors } = await launchApp());
 });
 
-afterAll(async () => {
-  await browser?.close();
-});
+afterAll(() => browser?.close());
 
 test('the Blocks pane shows the basic controller as layer blocks, top to bottom', async () => {
   await page.click('#pane-tabs [data-pane="blocks"]');

@@ -7,13 +7,13 @@ import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import type { Browser, Page } from 'playwright-core';
-import { launch, openApp, state } from './support';
+import { launchApp, state } from './support';
 
 jest.setTimeout(90_000);
 
 let browser: Browser;
 let page: Page;
-const pageErrors: string[] = [];
+let pageErrors: string[];
 
 /** The basic controller with WHISKER_LENGTH set to a text: whiskerOn's pointAt refuses it. */
 function brokenController(): string {
@@ -28,14 +28,10 @@ function brokenController(): string {
 }
 
 beforeAll(async () => {
-  ({ browser, page } = await launch());
-  page.on('pageerror', (e) => pageErrors.push(e.message));
-  await openApp(page);
+  ({ browser, page, pageErrors } = await launchApp());
 });
 
-afterAll(async () => {
-  await browser?.close();
-});
+afterAll(() => browser?.close());
 
 test('a failing function stops the run with its name, layer and tick, and Show block opens it', async () => {
   const chooser = page.waitForEvent('filechooser');

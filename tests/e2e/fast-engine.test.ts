@@ -4,13 +4,13 @@
  * an error naming the function while the app keeps working.
  */
 import type { Browser, Page } from 'playwright-core';
-import { launch, openApp, settle } from './support';
+import { launchApp, settle } from './support';
 
 jest.setTimeout(120_000);
 
 let browser: Browser;
 let page: Page;
-const pageErrors: string[] = [];
+let pageErrors: string[];
 /** The Content-Security-Policy the engine Worker's script was served with. */
 let workerCsp: string | undefined;
 
@@ -26,17 +26,15 @@ interface EngineState {
 const engineState = (): Promise<EngineState> => page.evaluate(() => window.layerbotTest!.state() as unknown as EngineState);
 
 beforeAll(async () => {
-  ({ browser, page } = await launch());
-  page.on('pageerror', (e) => pageErrors.push(e.message));
-  page.on('response', (r) => {
-    if (/\/assets\/worker-[\w-]+\.js$/.test(new URL(r.url()).pathname)) workerCsp = r.headers()['content-security-policy'];
-  });
-  await openApp(page);
+  ({ browser, page, pageErrors } = await launchApp({
+    beforeOpen: (p) =>
+      p.on('response', (r) => {
+        if (/\/assets\/worker-[\w-]+\.js$/.test(new URL(r.url()).pathname)) workerCsp = r.headers()['content-security-policy'];
+      }),
+  }));
 });
 
-afterAll(async () => {
-  await browser?.close();
-});
+afterAll(() => browser?.close());
 
 /** A one-function controller whose body command runs `code` from tick `from` on, then moves east. */
 function hostile(name: string, code: string, from: number): string {

@@ -9,7 +9,8 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Browser, Page } from 'playwright-core';
 import { parsePack, parseSubmission } from '../../app/core/packs';
-import { launch, openApp, state } from './support';
+import type { LayerbotPackTestHooks } from '../../app/renderer/packs/test-hooks';
+import { launchApp, openApp, state } from './support';
 
 jest.setTimeout(120_000);
 
@@ -19,30 +20,18 @@ const SOLUTIONS = JSON.parse(readFileSync(join(ROOT, 'examples/packs/intro.solut
 
 let browser: Browser;
 let page: Page;
-const pageErrors: string[] = [];
+let pageErrors: string[];
 
-interface PackState {
-  pack: string | null;
-  current: string | null;
-  checking: boolean;
-  preview: boolean;
-  statuses: Record<string, string>;
-  verdict: { passed: boolean; reasons: { criterion: string; world?: string; passed: boolean; detail: string }[] } | null;
-  checks: { challenge: string; ms: number; passed: boolean }[];
-  restrictions: { locked: { layer: string; function?: string }[]; toolbox?: string[] } | null;
-}
+/** What the pack test hooks report (app/renderer/packs/test-hooks.ts). */
+type PackState = ReturnType<LayerbotPackTestHooks['state']>;
 
-const packState = (): Promise<PackState> => page.evaluate(() => window.layerbotPackTest!.state() as PackState);
+const packState = (): Promise<PackState> => page.evaluate(() => window.layerbotPackTest!.state());
 
 beforeAll(async () => {
-  ({ browser, page } = await launch());
-  page.on('pageerror', (e) => pageErrors.push(e.message));
-  await openApp(page);
+  ({ browser, page, pageErrors } = await launchApp());
 });
 
-afterAll(async () => {
-  await browser?.close();
-});
+afterAll(() => browser?.close());
 
 /** Presses Check and waits for the verdict; returns it with the time the Check took. */
 async function check(): Promise<{ verdict: NonNullable<PackState['verdict']>; ms: number }> {

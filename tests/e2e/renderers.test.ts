@@ -4,7 +4,7 @@
  * by their pixels: the robot, a wall, the floor, and the trail after a few steps.
  */
 import type { Browser, Page } from 'playwright-core';
-import { COLORS, launch, near, openApp, pixelAt, state } from './support';
+import { COLORS, launchApp, near, pixelAt, state } from './support';
 
 jest.setTimeout(90_000);
 
@@ -13,17 +13,13 @@ const TRAIL = 0x22a546;
 describe.each(['webgl', 'canvas'])('the %s renderer', (renderer) => {
   let browser: Browser;
   let page: Page;
-  const pageErrors: string[] = [];
+  let pageErrors: string[];
 
   beforeAll(async () => {
-    ({ browser, page } = await launch());
-    page.on('pageerror', (e) => pageErrors.push(e.message));
-    await openApp(page, `?renderer=${renderer}`);
+    ({ browser, page, pageErrors } = await launchApp({ query: `?renderer=${renderer}` }));
   });
 
-  afterAll(async () => {
-    await browser?.close();
-  });
+  afterAll(() => browser?.close());
 
   test('draws the robot, the walls, the floor and the trail', async () => {
     expect((await state(page)).renderer).toBe(renderer);

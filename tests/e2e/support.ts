@@ -40,6 +40,30 @@ export async function openApp(page: Page, query = ''): Promise<void> {
   await page.waitForFunction(() => window.layerbotTest!.state().latestTick >= 0);
 }
 
+/** A browser on the started app, with the page errors it reports and how long the app took to start. */
+export interface LaunchedApp {
+  browser: Browser;
+  page: Page;
+  /** Uncaught errors of the page, in order: a test ends by expecting none. */
+  pageErrors: string[];
+  /** From opening the address until the app was ready, in milliseconds (reported, never asserted). */
+  interactiveMs: number;
+}
+
+/**
+ * Launches Chromium and opens the app. `query` is added to the address; `beforeOpen` runs on the
+ * page before it loads (to watch its requests).
+ */
+export async function launchApp(options: { query?: string; beforeOpen?: (page: Page) => void } = {}): Promise<LaunchedApp> {
+  const { browser, page } = await launch();
+  const pageErrors: string[] = [];
+  page.on('pageerror', (e) => pageErrors.push(e.message));
+  options.beforeOpen?.(page);
+  const t0 = Date.now();
+  await openApp(page, options.query);
+  return { browser, page, pageErrors, interactiveMs: Date.now() - t0 };
+}
+
 export function state(page: Page): Promise<AppState> {
   return page.evaluate(() => window.layerbotTest!.state());
 }
