@@ -228,6 +228,11 @@ export class App {
     });
   }
 
+  /** What the open challenge locks and offers (null: no challenge, nothing restricted). */
+  get editRestrictions(): EditRestrictions | null {
+    return this.restrictions;
+  }
+
   /** Sets what the open challenge locks and offers (null: no challenge, nothing restricted). */
   setRestrictions(r: EditRestrictions | null): void {
     this.restrictions = r;

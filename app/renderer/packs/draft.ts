@@ -26,18 +26,11 @@ export interface DraftCriteria {
   readonly variants: readonly WorldSpec[];
 }
 
-export interface DraftChallenge {
-  readonly id: string;
-  readonly title: string;
-  readonly description: string;
-  readonly world: WorldSpec;
-  readonly starter: ControllerSpec;
-  readonly locked: readonly Lock[];
+/** A challenge as the editor holds it: the toolbox and criteria in the form its controls edit. */
+export interface DraftChallenge extends Omit<Challenge, 'toolbox' | 'criteria'> {
   /** The categories offered; null offers all of them. */
   readonly toolbox: readonly ToolboxCategory[] | null;
   readonly criteria: DraftCriteria;
-  readonly hints: readonly string[];
-  readonly maxTicks: number;
 }
 
 export interface PackDraft {

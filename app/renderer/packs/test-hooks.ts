@@ -5,6 +5,7 @@
  */
 import { parseController } from '../../core/formats';
 import type { App } from '../app/app';
+import type { EditRestrictions } from '../panes/types';
 import { packEditor } from './editor-pane';
 import { checkDraft } from './draft';
 import { progressOf } from './progress';
@@ -19,7 +20,8 @@ export interface LayerbotPackTestHooks {
     statuses: Record<string, string>;
     verdict: { passed: boolean; reasons: { criterion: string; world?: string; passed: boolean; detail: string }[] } | null;
     checks: { challenge: string; ms: number; passed: boolean }[];
-    restrictions: unknown;
+    /** What the open challenge locks and offers, as the app applies it. */
+    restrictions: EditRestrictions | null;
   };
   /** Opens pack text as File › Open pack… would. */
   openPackText(text: string, name: string): boolean;
@@ -38,12 +40,6 @@ declare global {
 }
 
 export function exposePackTestHooks(app: App, session: PackSession): void {
-  let restrictions: unknown = null;
-  const original = app.setRestrictions.bind(app);
-  app.setRestrictions = (r) => {
-    restrictions = r;
-    original(r);
-  };
   window.layerbotPackTest = {
     state() {
       const p = session.progress;
@@ -58,7 +54,7 @@ export function exposePackTestHooks(app: App, session: PackSession): void {
         statuses,
         verdict: v ? { passed: v.passed, reasons: v.reasons.map((r) => ({ ...r })) } : null,
         checks: session.checks.slice(),
-        restrictions,
+        restrictions: app.editRestrictions,
       };
     },
     openPackText: (text, name) => session.openText(text, name, { text, name }),
