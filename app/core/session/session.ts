@@ -47,8 +47,6 @@ export class ControllerInvalidError extends Error {
   }
 }
 
-type ArgSource = (ctx: TickContext) => unknown;
-
 /**
  * Where an argument comes from, as data: the tick loop gathers arguments with one switch, which V8
  * compiles to straight-line code, where calling a different closure per arc would not inline.
@@ -84,7 +82,6 @@ export class Session {
   readonly functions: readonly PlacedFunction[];
   readonly compiled: readonly CompiledFunction[];
   private readonly order: readonly number[];
-  private readonly args: readonly (readonly ArgSource[])[];
   private readonly plans: readonly (readonly ArgPlan[])[];
   /** One `undefined` per function, appended (a packed list: see `runFunction`), copied every tick. */
   private readonly noOutputs: unknown[] = [];
@@ -119,7 +116,6 @@ export class Session {
     for (let i = 0; i < this.functions.length; i++) this.noOutputs.push(undefined);
     this.lastCalls = this.noOutputs.map(() => null);
     this.plans = this.functions.map(({ fn }) => fn.inputs.map((inp) => this.argPlan(inp.from)));
-    this.args = this.plans.map((plans) => plans.map((p) => (ctx: TickContext) => gather(p, ctx)));
     this.worldSpec = deepFreeze(world);
     this.streams = this.newStreams();
     this.history = new History(this.firstRecord());
@@ -270,7 +266,7 @@ export class Session {
   arcValue(tick: number, i: number, j: number): unknown {
     const record = this.history.at(tick);
     const prev = this.history.at(tick - 1);
-    return this.args[i][j]({
+    return gather(this.plans[i][j], {
       world: this.worldInputs(prev.world, tick),
       previous: prev.tick === 0 ? null : prev.outputs,
       outputs: record.outputs as unknown[],
