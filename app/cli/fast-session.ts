@@ -14,6 +14,7 @@ import type { GeneratedBody } from '../core/controller/compile';
 import { bodyOf } from '../core/controller/compile';
 import type { ControllerSpec } from '../core/controller/model';
 import { allFunctions } from '../core/controller/model';
+import { functionErrorMessage } from '../core/sandbox/types';
 import type { ControllerError, RunSummary } from '../core/session/types';
 import type { WorldSpec } from '../core/world/world';
 import { workerBundle } from './bundle';
@@ -80,14 +81,13 @@ export function runFastSession(world: WorldSpec, controller: ControllerSpec, opt
   const stoppedError = (what: string): ControllerError => {
     const running = Atomics.load(view, CONTROL.running);
     const placed = running > 0 ? functions[running - 1] : undefined;
-    const where = placed ? `Error in function "${placed.fn.name}" (layer "${placed.layer.name}"): ` : 'Error: ';
     return {
       tick: Atomics.load(view, CONTROL.tick),
       function: placed?.fn.name ?? null,
       layer: placed?.layer.name ?? null,
       blockId: null,
       kind: 'resources',
-      message: where + what,
+      message: placed ? functionErrorMessage(placed.fn.name, placed.layer.name, what) : `Error: ${what}`,
     };
   };
 

@@ -5,6 +5,7 @@
  * function that assigns one changes nothing for the next tick: functions stay pure.
  */
 import type { CompiledFunction } from '../sandbox/types';
+import { functionErrorMessage } from '../sandbox/types';
 import type { ControllerSpec, FunctionSpec, LayerSpec } from './model';
 import { allFunctions } from './model';
 
@@ -25,7 +26,7 @@ export class BodyError extends Error {
     readonly layerName: string,
     detail: string,
   ) {
-    super(`Error in function "${functionName}" (layer "${layerName}"): ${detail}`);
+    super(functionErrorMessage(functionName, layerName, detail));
     this.name = 'BodyError';
   }
 }

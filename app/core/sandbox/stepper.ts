@@ -28,6 +28,7 @@ import { ValueProblem } from './convert';
 import type { SandboxInternals } from './interpreter';
 import { InterpreterSandbox } from './interpreter';
 import type { CompiledFunction, SandboxResult } from './types';
+import { functionErrorMessage } from './types';
 
 type Obj = Interpreter.Object;
 /** Read once: with bundlers' interop, `Interpreter.Object` may be a getter on every access. */
@@ -332,7 +333,7 @@ export class Stepper {
 
   private message(detail: string): string {
     const { fn } = this.options;
-    return `Error in function "${fn.name}" (layer "${fn.layer}"): ${detail}`;
+    return functionErrorMessage(fn.name, fn.layer, detail);
   }
 
   /** The run's message for a result of the wrong type (Session.runFunction words it the same). */

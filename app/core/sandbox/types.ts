@@ -64,6 +64,11 @@ export interface Sandbox {
   dispose(): void;
 }
 
+/** How every error of a function is told: `Error in function "arrived" (layer "Middle"): <detail>`. */
+export function functionErrorMessage(functionName: string, layerName: string, detail: string): string {
+  return `Error in function "${functionName}" (layer "${layerName}"): ${detail}`;
+}
+
 /** Raised by a factory when a function's source does not parse. */
 export class CompileError extends Error {
   constructor(
@@ -71,7 +76,7 @@ export class CompileError extends Error {
     readonly layerName: string,
     readonly detail: string,
   ) {
-    super(`Error in function "${functionName}" (layer "${layerName}"): ${detail}`);
+    super(functionErrorMessage(functionName, layerName, detail));
     this.name = 'CompileError';
   }
 }

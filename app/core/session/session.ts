@@ -18,6 +18,7 @@ import { allFunctions, allRandomSources, DEFAULT_STEP_BUDGET } from '../controll
 import { validateController } from '../controller/validate';
 import { History } from '../history/history';
 import type { CompiledFunction, Sandbox, SandboxFactory, SandboxFailure } from '../sandbox/types';
+import { functionErrorMessage } from '../sandbox/types';
 import type { BodyCommand } from '../values';
 import { deepFreeze, describeValue, formatValue, matchesType, sameValue, VALUE_TYPE_LABELS } from '../values';
 import type { WorldEdit } from '../world/edits';
@@ -369,9 +370,11 @@ export class Session {
         layer: layer.name,
         blockId: null,
         kind: 'type',
-        message:
-          `Error in function "${fn.name}" (layer "${layer.name}"): it should return ${VALUE_TYPE_LABELS[fn.output]}, ` +
-          `but it returned ${describeValue(result.value)}${result.value === undefined ? '' : ` (${formatValue(result.value, 60)})`}.`,
+        message: functionErrorMessage(
+          fn.name,
+          layer.name,
+          `it should return ${VALUE_TYPE_LABELS[fn.output]}, but it returned ${describeValue(result.value)}${result.value === undefined ? '' : ` (${formatValue(result.value, 60)})`}.`,
+        ),
       };
     }
     // A value equal to this function's previous output is stored as that same object, so the
@@ -399,7 +402,7 @@ export class Session {
       layer: layer.name,
       blockId,
       kind: result.kind,
-      message: `Error in function "${fn.name}" (layer "${layer.name}"): ${result.message}`,
+      message: functionErrorMessage(fn.name, layer.name, result.message),
     };
   }
 }

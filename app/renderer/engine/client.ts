@@ -13,6 +13,7 @@
  * the same ticks again.
  */
 import type { ControllerSpec } from '../../core/controller/model';
+import { functionErrorMessage } from '../../core/sandbox/types';
 import type { RunSummary, SessionStatus } from '../../core/session/types';
 import type { WorldEdit } from '../../core/world/edits';
 import type { WorldSpec } from '../../core/world/world';
@@ -139,7 +140,7 @@ export class EngineClient {
         function: placed?.name ?? null,
         layer: placed?.layer ?? null,
         kind: 'resources',
-        message: placed ? `Error in function "${placed.name}" (layer "${placed.layer}"): ${what}` : `Error: ${what}`,
+        message: placed ? functionErrorMessage(placed.name, placed.layer, what) : `Error: ${what}`,
       };
       this.probe = null;
     } else this.probe = { tick: known + 1, index: null };
